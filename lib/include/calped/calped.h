@@ -1,0 +1,8 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Umbrella header of the calped core library.
+#pragma once
+
+#include <calped/detector.h>
+#include <calped/image.h>
+#include <calped/model.h>
+#include <calped/status.h>

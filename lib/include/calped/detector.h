@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The ACF pedestrian detector, generic mode (Dollár's sliding window over the fast
+// feature pyramid). All memory is allocated by create(); detect() allocates nothing.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include <calped/image.h>
+#include <calped/model.h>
+#include <calped/status.h>
+
+namespace calped {
+
+struct DetectorConfig {
+	// Largest input frame (before resizing) that detect() will accept.
+	int maxWidth = 1920;
+	int maxHeight = 1080;
+	// Input upscaling factor (the thesis's "resize"): the frame is resampled to
+	// round(size * resize) first, as the toolbox's imResample does; boxes come back in
+	// input pixels. 1.0 means no resampling.
+	double resize = 1.0;
+	// Capacity for windows that pass the cascade in one frame (before NMS). Excess windows
+	// are dropped and counted in FrameStats::droppedWindows, never silently lost.
+	int maxCandidates = 1 << 16;
+	// Override the model's cascade threshold (NaN keeps the model's).
+	float cascadeThreshold = __builtin_nanf("");
+	// Skip non-maximum suppression (returns every window that passed the cascade).
+	bool disableNms = false;
+};
+
+// One detection in input-image pixels: top-left corner, size, classifier score.
+struct Detection {
+	float x = 0, y = 0, w = 0, h = 0;
+	float score = 0;
+};
+
+// What the detector did on the last frame (counters come from the detector itself).
+struct FrameStats {
+	int levels = 0;          // pyramid levels
+	int computedLevels = 0;  // levels whose channels were computed (octaves)
+	uint64_t windows = 0;    // classifier windows evaluated (CApF)
+	uint64_t candidates = 0; // windows that passed the cascade
+	uint64_t droppedWindows = 0;
+	double msResize = 0, msChannels = 0, msApprox = 0, msClassify = 0, msNms = 0, msTotal = 0;
+};
+
+// Result of one call: valid until the next detect() on the same detector.
+struct Detections {
+	const Detection *items = nullptr;
+	int count = 0;
+	const Detection *begin() const { return items; }
+	const Detection *end() const { return items + count; }
+};
+
+class DetectorImpl;
+
+class Detector
+{
+public:
+	// Allocates every buffer the largest configured frame needs.
+	static Status create(const Model &model, const DetectorConfig &config,
+			     std::unique_ptr<Detector> &out);
+	~Detector();
+
+	// Runs the detector on one frame. Frames may differ in size between calls as long as
+	// they fit the configured maximum.
+	Status detect(const ImageView &image, Detections &out);
+
+	const FrameStats &lastStats() const;
+	const DetectorConfig &config() const;
+
+	// Internal access for tests and tools that inspect the pyramid.
+	DetectorImpl &impl() { return *impl_; }
+
+private:
+	Detector() = default;
+	std::unique_ptr<DetectorImpl> impl_;
+};
+
+} // namespace calped
