@@ -23,7 +23,7 @@ enum class NmsOverlapDenominator : uint32_t { Min = 0, Union = 1 };
 // The options of a detector, named as in Dollár's toolbox (detector.opts).
 struct ModelParams {
 	// Window geometry, in pixels (height, width).
-	int32_t modelDsH = 100, modelDsW = 41;
+	float modelDsH = 100, modelDsW = 41;     // may be fractional (Caltech: 50 x 20.5)
 	int32_t modelDsPadH = 128, modelDsPadW = 64;
 	int32_t stride = 4;
 	float cascThr = -1.0f; // soft cascade: a window stops once its score <= cascThr
@@ -43,7 +43,7 @@ struct ModelParams {
 	int32_t nPerOct = 8, nOctUp = 0, nApprox = 7;
 	float lambdas[3] = { 0.0f, 0.11579f, 0.11579f }; // colour, magnitude, histograms
 	int32_t padH = 16, padW = 12;                    // pixels; /shrink cells each side
-	int32_t minDsH = 100, minDsW = 41;
+	float minDsH = 100, minDsW = 41;
 	int32_t pyramidSmooth = 1;                       // convTri radius applied to every level
 
 	// Non-maximum suppression (pNms, type 'maxg').
