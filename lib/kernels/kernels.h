@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Signatures of the hot per-frame kernels. Each kernel has a plain scalar reference in
+// kernels/ref/ (the specification: rounding and saturation are defined there) and may
+// have SIMD versions that must produce bit-identical output (tests compare them).
+//
+// Number formats (docs/channels.md): every channel plane holds uint16 values
+// q = round(value * 2^14) ("Q14"), saturated to 65535.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace calped {
+namespace kernels {
+
+constexpr int kQ = 14;            // channel fraction bits
+constexpr int kOne = 1 << kQ;     // 1.0 in channel fixed point
+// The full-resolution LUV image keeps two more bits: gradients of the smoothed colour
+// planes are small differences, and rounding them at Q14 biases weak magnitudes.
+constexpr int kLuvQ = 16;
+// Orientations are in units of pi/nOrients with this many fraction bits.
+constexpr int kOrientQ = 10;
+
+// ---- colour: RGB8 -> LUV (Q16), the toolbox's rgbConvert(I, 'luv') -------------------
+struct LuvTables {
+	// x, y, z of each 8-bit component in Q28 (x = xr[r] + xg[g] + xb[b]). The L table
+	// is indexed by floor(y * 1024), so y needs to be exact well beyond 2^-10: a pixel
+	// whose index flips moves L by a whole table step.
+	int32_t xr[256], xg[256], xb[256];
+	int32_t yr[256], yg[256], yb[256];
+	int32_t zr[256], zg[256], zb[256];
+	// L/270 in Q16 indexed by floor(y * 1024) (the toolbox's 1025-entry cube-root table).
+	uint16_t l[1025 + 39];
+	// 2^27 / (m + 0.5) for normalised mantissas m in [2048, 4096).
+	uint32_t rcp[2048];
+	int32_t un13, vn13; // 13 * u'n, 13 * v'n in Q16
+	int32_t minu, minv; // the toolbox's offsets -88/270, -134/270 in Q16
+};
+void buildLuvTables(LuvTables &t);
+
+using RgbToLuvFn = void (*)(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride,
+			    int width, int height, uint16_t *l, uint16_t *u, uint16_t *v,
+			    ptrdiff_t stride);
+void rgbToLuv_ref(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride, int width,
+		  int height, uint16_t *l, uint16_t *u, uint16_t *v, ptrdiff_t stride);
+
+// ---- resampling (the toolbox's imResampleMex) ------------------------------------------
+// Separable linear resampling: output index o takes taps[o].count source samples
+// starting at taps[o].first with Q14 weights (area weights when shrinking, bilinear
+// when enlarging, exactly as the toolbox builds them).
+constexpr int kMaxTaps = 12;
+struct ResampleTap {
+	int32_t first;
+	int32_t count;
+	int32_t weight[kMaxTaps];
+};
+
+// Taps for resampling n source samples to m, emulating the toolbox's resampleCoef in
+// single precision; weights sum to round(gain * 2^14). Returns false if a tap count
+// would exceed kMaxTaps (shrinking by more than about 10x).
+bool buildResampleTaps(int n, int m, double gain, ResampleTap *taps);
+
+// uint8 interleaved RGB -> uint8 interleaved RGB (input "resize"). rowTmp holds
+// 3 * srcWidth int32. Rounding reproduces the toolbox's (uchar)(v + .5) after its
+// 1/(1+1e-6) factor, i.e. exact halves round down.
+void resampleRgb8_ref(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+		      uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		      const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp);
+
+// One uint16 plane -> one plane of the same fixed-point format. yTaps' weights may include a gain (the power-law
+// ratio of approximated levels). tmp holds srcHeight rows of dstWidth uint16.
+void resamplePlane_ref(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+		       uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		       const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
+		       ptrdiff_t tmpStride);
+
+// ---- smoothing ---------------------------------------------------------------------------
+// convTri with radius 1: [1 2 1]/4 in both directions, borders replicated. dst may not
+// alias src. rowTmp holds width uint32.
+void smoothTri1_ref(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
+		    ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp);
+
+// ---- gradients ---------------------------------------------------------------------------
+struct GradientTables {
+	// Square root / reciprocal square root, indexed by a 12-bit mantissa (normalizeEven).
+	uint16_t sqrtQ8[4096];   // sqrt(m) * 2^8 (exact for m < 1024, midpoint above)
+	uint32_t rsqrtQ20[4096]; // 2^20 / sqrt(m)
+	// Orientation (in units of pi/nOrients, kOrientQ fraction bits) from a cosine or sine in Q12.
+	uint16_t fromCos[2 * 4096 + 1];  // index cos + 4096
+	uint16_t fromSinAcute[4096 + 1];  // index sin, angle asin(sin) in [0, pi/2]
+	uint16_t fromSinObtuse[4096 + 1]; // index sin, angle pi - asin(sin)
+	int nOrients;
+	// Reciprocal for the normalisation M / (S + c): 1296 * 2^16 / (m + .5), m in [2048, 4096).
+	uint32_t normRcp[2048];
+	uint32_t normConst; // c * 2^16 * (normRad+1)^4, added to the smoothed magnitude sum
+};
+void buildGradientTables(GradientTables &t, int nOrients, int normRad, double normConst);
+
+// Gradient of three smoothed Q16 colour planes (max magnitude over channels, as the
+// toolbox's gradMag with colorChn 0): magnitude in Q16, saturated at 65535, and
+// orientation o in units of pi/nOrients with kOrientQ fraction bits
+// (0 <= o < nOrients << kOrientQ). Each doubled
+// derivative saturates at +-46340 so squared magnitudes fit 32 bits.
+void gradMagOrient_ref(const GradientTables &t, const uint16_t *const planes[3],
+		       ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
+		       ptrdiff_t outStride, int32_t *scratch);
+
+// Triangle filter of radius r (the toolbox's convTri, symmetric borders) without the
+// final division: out = sum of weights * in, weights summing to (r+1)^4.
+void triSumR_ref(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
+		 int width, int height, int r, uint32_t *scratch);
+
+// mag / (smoothedSum / (r+1)^4 + c): Q16 magnitude in, Q14 channel out, in place
+// (the toolbox's gradMagNorm).
+void normalizeMag_ref(const GradientTables &t, uint16_t *mag, ptrdiff_t magStride,
+		      const uint32_t *smoothedSum, ptrdiff_t sumStride, int width, int height);
+
+// ---- aggregation -------------------------------------------------------------------------
+// 4x4 block average (the toolbox's shrink by imResampleMex): dst is width/4 x height/4,
+// divided by a further 2^extraShift (to turn Q16 colour into Q14 channels).
+void shrink4_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift);
+
+// Orientation histograms over 4x4 cells (gradHist, binSize 4): nOrients planes of
+// width/4 x height/4. softBin >= 0 splits each pixel between its two nearest
+// orientations (linear in angle); softBin < 0 gives it wholly to the nearest one.
+void gradHist4_ref(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		   int height, int nOrients, bool interpolate, uint16_t *const *hist,
+		   ptrdiff_t histStride, uint32_t *scratch);
+
+} // namespace kernels
+} // namespace calped

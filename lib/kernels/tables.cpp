@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Lookup tables for the kernels, built once at setup (never on the per-frame path).
+#include "kernels.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace calped {
+namespace kernels {
+
+namespace {
+
+int32_t roundToInt(double v) { return static_cast<int32_t>(std::lround(v)); }
+
+} // namespace
+
+void buildLuvTables(LuvTables &t)
+{
+	// The toolbox's sRGB -> XYZ matrix (rgbConvertMex), applied to 8-bit values / 255.
+	const double mr[3] = { 0.430574, 0.222015, 0.020183 };
+	const double mg[3] = { 0.341550, 0.706655, 0.129553 };
+	const double mb[3] = { 0.178325, 0.071330, 0.939180 };
+	const double q28 = 1 << 28;
+	for (int i = 0; i < 256; i++) {
+		const double v = i / 255.0 * q28;
+		t.xr[i] = roundToInt(mr[0] * v);
+		t.yr[i] = roundToInt(mr[1] * v);
+		t.zr[i] = roundToInt(mr[2] * v);
+		t.xg[i] = roundToInt(mg[0] * v);
+		t.yg[i] = roundToInt(mg[1] * v);
+		t.zg[i] = roundToInt(mg[2] * v);
+		t.xb[i] = roundToInt(mb[0] * v);
+		t.yb[i] = roundToInt(mb[1] * v);
+		t.zb[i] = roundToInt(mb[2] * v);
+	}
+
+	// L / 270 for y = i / 1024, CIE lightness with the linear toe below (6/29)^3.
+	const double y0 = std::pow(6.0 / 29.0, 3.0);
+	const double a = std::pow(29.0 / 3.0, 3.0);
+	const double maxi = 1.0 / 270.0;
+	for (int i = 0; i < 1025; i++) {
+		const double y = i / 1024.0;
+		const double l = y > y0 ? 116.0 * std::cbrt(y) - 16.0 : y * a;
+		t.l[i] = static_cast<uint16_t>(roundToInt(l * maxi * (1 << kLuvQ)));
+	}
+	for (int i = 1025; i < 1025 + 39; i++)
+		t.l[i] = t.l[1024];
+
+	for (int m = 0; m < 2048; m++)
+		t.rcp[m] = static_cast<uint32_t>(std::lround((1 << 27) / (2048 + m + 0.5)));
+
+	const double one = 1 << kLuvQ;
+	t.un13 = roundToInt(13.0 * 0.197833 * one);
+	t.vn13 = roundToInt(13.0 * 0.468331 * one);
+	t.minu = roundToInt(-88.0 * maxi * one);
+	t.minv = roundToInt(-134.0 * maxi * one);
+}
+
+void buildGradientTables(GradientTables &t, int nOrients, int normRad, double normConst)
+{
+	const double pi = 3.14159265358979323846;
+	for (int m = 0; m < 4096; m++) {
+		// Below 1024 the mantissa is the exact value; above, it stands for an interval
+		// of values, so take the interval's midpoint.
+		const double v = m < 1024 ? m : m + 0.5;
+		t.sqrtQ8[m] = static_cast<uint16_t>(std::lround(std::sqrt(v) * 256.0));
+		t.rsqrtQ20[m] = m == 0 ? 0 : static_cast<uint32_t>(std::lround((1 << 20) / std::sqrt(v)));
+	}
+
+	// Orientation in [0, pi) as o = round(theta * nOrients / pi * 2^kOrientQ), capped
+	// below nOrients like the toolbox's acos table (which stops at pi - 1e-6). Rounding,
+	// not truncation, so the split between neighbouring bins is unbiased.
+	t.nOrients = nOrients;
+	const int oMax = (nOrients << kOrientQ) - 1;
+	auto toO = [&](double theta) {
+		const int o = static_cast<int>(std::lround(theta * nOrients / pi * (1 << kOrientQ)));
+		return static_cast<uint16_t>(std::clamp(o, 0, oMax));
+	};
+	for (int c = -4096; c <= 4096; c++)
+		t.fromCos[c + 4096] = toO(std::acos(c / 4096.0));
+	for (int s = 0; s <= 4096; s++) {
+		t.fromSinAcute[s] = toO(std::asin(s / 4096.0));
+		t.fromSinObtuse[s] = toO(pi - std::asin(s / 4096.0));
+	}
+
+	const double weightSum = std::pow(normRad + 1.0, 4.0);
+	for (int m = 0; m < 2048; m++)
+		t.normRcp[m] = static_cast<uint32_t>(std::lround(weightSum * 65536.0 / (2048 + m + 0.5)));
+	t.normConst = static_cast<uint32_t>(std::lround(normConst * (1 << kLuvQ) * weightSum));
+}
+
+} // namespace kernels
+} // namespace calped
+
+namespace calped {
+namespace kernels {
+
+bool buildResampleTaps(int n, int m, double gain, ResampleTap *taps)
+{
+	// Single precision on purpose: these are the toolbox's own float computations.
+	const float s = float(m) / float(n), sInv = 1 / s;
+	const float wt0 = 1e-3f * s;
+	for (int o = 0; o < m; o++) {
+		ResampleTap &t = taps[o];
+		float w[kMaxTaps + 2];
+		int first = 0, count = 0;
+		if (n > m) {
+			// Shrinking: area weights of the source samples the output cell covers.
+			const float ya0f = o * sInv, ya1f = ya0f + sInv;
+			const int ya0 = int(std::ceil(ya0f)), ya1 = int(ya1f);
+			float sum = 0;
+			for (int ya = ya0 - 1; ya < ya1 + 1; ya++) {
+				float wt = s;
+				if (ya == ya0 - 1)
+					wt = (ya0 - ya0f) * s;
+				else if (ya == ya1)
+					wt = (ya1f - ya1) * s;
+				if (!(wt > wt0 && ya >= 0 && ya < n))
+					continue;
+				if (count == 0)
+					first = ya;
+				if (count == kMaxTaps || ya != first + count)
+					return false;
+				w[count++] = wt;
+				sum += wt;
+			}
+			if (sum > 1)
+				for (int j = 0; j < count; j++)
+					w[j] /= sum;
+		} else {
+			// Enlarging (or copying): bilinear between the two nearest source samples,
+			// pixel centres aligned, clamped at the borders.
+			const float yaf = (0.5f + o) * sInv - 0.5f;
+			int ya = int(std::floor(yaf));
+			float wt = 1;
+			if (ya >= 0 && ya < n - 1)
+				wt = 1 - (yaf - ya);
+			if (ya < 0)
+				ya = 0;
+			if (ya >= n - 1)
+				ya = n - 1;
+			first = ya;
+			w[count++] = wt;
+			if (wt < 1)
+				w[count++] = 1 - wt;
+		}
+		// Quantise to Q14 keeping the sum exact (flat input stays flat).
+		double total = 0;
+		int32_t qsum = 0, big = 0;
+		for (int j = 0; j < count; j++) {
+			total += w[j];
+			t.weight[j] = roundToInt(w[j] * gain * kOne);
+			qsum += t.weight[j];
+			if (t.weight[j] > t.weight[big])
+				big = j;
+		}
+		if (count > 0)
+			t.weight[big] += roundToInt(total * gain * kOne) - qsum;
+		t.first = first;
+		t.count = count;
+	}
+	return true;
+}
+
+} // namespace kernels
+} // namespace calped

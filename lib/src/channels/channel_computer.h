@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The toolbox's chnsCompute for one pyramid scale: from LUV planes at full resolution
+// to the ten aggregated channels (L, U, V, gradient magnitude, six orientations),
+// each a quarter of the size in both directions.
+#pragma once
+
+#include <calped/model.h>
+
+#include "core/plane.h"
+#include "kernels.h"
+
+namespace calped {
+
+constexpr int kChannelCount = 10;
+
+class ChannelComputer
+{
+public:
+	// Allocates scratch for LUV images up to maxWidth x maxHeight pixels.
+	void init(const ModelParams &params, int maxWidth, int maxHeight);
+
+	// luv: three Q16 planes of width x height (multiples of 4, within the maximum);
+	// out: ten planes of width/4 x height/4.
+	void compute(const Plane<const uint16_t> luv[3], int width, int height,
+		     const Plane<uint16_t> out[kChannelCount]);
+
+	const kernels::GradientTables &gradientTables() const { return grad_; }
+
+private:
+	ModelParams params_;
+	kernels::GradientTables grad_;
+	PlaneBuffer<uint16_t> smoothed_[3];
+	PlaneBuffer<uint16_t> mag_, orient_;
+	PlaneBuffer<uint32_t> magSum_;
+	std::vector<uint32_t> rowTmp_;
+	std::vector<int32_t> gradScratch_;
+};
+
+} // namespace calped

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Constants of the model blob, version 1. docs/model-format.md is the specification;
+// the offsets here must stay in step with its table.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace calped {
+namespace blob {
+
+constexpr uint8_t kMagic[8] = { 'C', 'A', 'L', 'P', 'E', 'D', 'M', 0 };
+constexpr uint32_t kVersion = 1;
+
+// Header: magic, version, header size, payload size, payload CRC, header CRC.
+constexpr size_t kHeaderSize = 32;
+constexpr size_t kVersionOffset = 8;
+constexpr size_t kHeaderSizeOffset = 12;
+constexpr size_t kPayloadSizeOffset = 16;
+constexpr size_t kPayloadCrcOffset = 24;
+constexpr size_t kHeaderCrcOffset = 28; // CRC-32 of header bytes [0, 28)
+
+// Payload: 28 parameter words, nTrees, nodesPerTree, treeDepth, name length (all 4 bytes),
+// then the name bytes and the four node arrays of 4-byte words.
+constexpr size_t kFixedPayloadSize = 4 * (28 + 3 + 1);
+constexpr size_t kBytesPerNode = 4 * 4; // fids, thrs, child, hs
+
+// Limits checked by validateModel (and therefore by loadModel).
+constexpr uint32_t kMaxNameLength = 256;
+constexpr int32_t kMaxTrees = 1 << 16;
+constexpr int32_t kMaxNodesPerTree = 255;
+constexpr int32_t kMaxTreeDepth = 8;
+
+} // namespace blob
+} // namespace calped
