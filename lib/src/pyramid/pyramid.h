@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The fast feature pyramid (the toolbox's chnsPyramid): channels computed at one scale
+// per octave, the scales between them approximated by resampling the nearest computed
+// level and correcting with the power law; every level then smoothed and padded, ready
+// for the sliding-window classifier. All buffers are sized once, in init().
+#pragma once
+
+#include <calped/model.h>
+#include <calped/status.h>
+
+#include "channels/channel_computer.h"
+#include "core/plane.h"
+#include "kernels.h"
+#include "pyramid/scales.h"
+
+namespace calped {
+
+// One level as the classifier sees it: ten planes of paddedHeight x paddedWidth cells
+// sharing rowStride and planeStride (fixed for the pyramid, so feature offsets are too).
+struct LevelChannels {
+	const uint16_t *data = nullptr;
+	int paddedHeight = 0;
+	int paddedWidth = 0;
+	ptrdiff_t rowStride = 0;
+	ptrdiff_t planeStride = 0;
+};
+
+class Pyramid
+{
+public:
+	// maxWidth x maxHeight: the largest RGB image build() will see (after any resize).
+	Status init(const ModelParams &params, int maxWidth, int maxHeight);
+
+	// Colour conversion and channels of every computed level for one RGB8 image.
+	Status build(const uint8_t *rgb, ptrdiff_t stride, int width, int height);
+
+	const ScaleList &scales() const { return scales_; }
+
+	// Smooth and pad level i (computing it by approximation first if needed).
+	LevelChannels level(int i);
+
+	ptrdiff_t rowStride() const { return rowStride_; }
+	ptrdiff_t planeStride() const { return planeStride_; }
+	int padCellsH() const { return padH_; }
+	int padCellsW() const { return padW_; }
+
+	// Time spent in the last build() / level() calls, for FrameStats.
+	double msChannels = 0, msApprox = 0, msSmooth = 0;
+
+private:
+	void approximate(int i, Plane<uint16_t> out[kChannelCount]);
+	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
+
+	ModelParams params_;
+	kernels::LuvTables luvTables_;
+	ChannelComputer channels_;
+	ScaleList scales_;
+	int width_ = 0, height_ = 0;
+	int padH_ = 0, padW_ = 0;
+
+	PlaneBuffer<uint16_t> luv_[3];      // whole image in LUV
+	PlaneBuffer<uint16_t> halfLuv_[3];  // the image at scale 1/2 (source of smaller octaves)
+	PlaneBuffer<uint16_t> levelLuv_[3]; // image resampled to one computed scale
+	PlaneBuffer<uint16_t> resampleTmp_;
+	std::vector<kernels::ResampleTap> xTaps_, yTaps_, yTapsGain_;
+
+	// Raw (unsmoothed, unpadded) channels of every computed level, back to back.
+	std::vector<uint16_t> realStore_;
+	size_t realOffset_[kMaxLevels] = {};
+	PlaneBuffer<uint16_t> approx_;     // channels of one approximated level
+	std::vector<uint16_t> levelBuf_;   // smoothed and padded level for the classifier
+	std::vector<uint32_t> rowTmp_;
+	ptrdiff_t rowStride_ = 0, planeStride_ = 0;
+	int maxLevelH_ = 0, maxLevelW_ = 0;
+};
+
+} // namespace calped
