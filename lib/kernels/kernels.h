@@ -128,5 +128,40 @@ void gradHist4_ref(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride
 		   int height, int nOrients, bool interpolate, uint16_t *const *hist,
 		   ptrdiff_t histStride, uint32_t *scratch);
 
+// ---- boosted trees over sliding windows ------------------------------------------------
+// A complete depth-2 tree with its feature offsets resolved for the level layout:
+// node 0 tests off[0] < thr[0]; then node 1 (left) or node 2 (right); leaves 0..3 are
+// left-left, left-right, right-left, right-right.
+struct Depth2Tree {
+	uint32_t off[3];
+	int32_t thr[3];
+	int32_t leaf[4];
+};
+
+// A general tree node: leaf when child == 0, else children child and child + 1.
+struct TreeNode {
+	uint32_t off;
+	int32_t thr;
+	uint32_t child;
+	int32_t leaf;
+};
+
+// A window that passed the soft cascade: its origin (in cells) and score (Q16).
+struct WindowHit {
+	int32_t row, col;
+	int32_t score;
+};
+
+// Evaluate every window whose origin is at (r * step, c * step) cells for r < rows,
+// c < cols, in the toolbox's order (columns outer). A window stops as soon as its
+// running score is <= cascThr and is kept if it ends above it. Returns the number of
+// windows that passed; only the first `capacity` are written.
+uint64_t scanDepth2_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
+			const Depth2Tree *trees, int nTrees, int32_t cascThr, WindowHit *hits,
+			uint64_t capacity);
+uint64_t scanTrees_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
+		       const TreeNode *nodes, int nTrees, int nodesPerTree, int32_t cascThr,
+		       WindowHit *hits, uint64_t capacity);
+
 } // namespace kernels
 } // namespace calped

@@ -1,21 +1,203 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// TEMPORARY placeholder so tools link while the real detector is written.
 #include <calped/detector.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <new>
+
 #include "detect/detector_impl.h"
+#include "detect/nms.h"
+
 namespace calped {
-Status Detector::create(const Model &, const DetectorConfig &config, std::unique_ptr<Detector> &out)
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0)
 {
-	out.reset(new Detector());
-	out->impl_.reset(new DetectorImpl());
-	out->impl_->config = config;
+	return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+int scaledSize(int size, double resize) { return int(std::lround(size * resize)); }
+
+} // namespace
+
+Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
+{
+	Status st = validateModel(model);
+	if (!st.ok())
+		return st;
+	if (cfg.maxWidth < 1 || cfg.maxHeight < 1 || cfg.maxWidth > 16384 || cfg.maxHeight > 16384)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "maximum frame size %dx%d is outside 1..16384", cfg.maxWidth,
+				     cfg.maxHeight);
+	if (!(cfg.resize > 0.0 && cfg.resize <= 8.0))
+		return Status::error(ErrorCode::InvalidArgument, "resize %g is outside (0, 8]",
+				     cfg.resize);
+	if (cfg.maxCandidates < 1 || cfg.maxCandidates > (1 << 24))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "maxCandidates %d is outside 1..16777216", cfg.maxCandidates);
+	config = cfg;
+	params_ = model.params;
+	maxWidth_ = scaledSize(cfg.maxWidth, cfg.resize);
+	maxHeight_ = scaledSize(cfg.maxHeight, cfg.resize);
+	if (maxWidth_ < 1 || maxHeight_ < 1)
+		return Status::error(ErrorCode::InvalidArgument, "resize %g leaves no pixels",
+				     cfg.resize);
+
+	st = pyramid.init(params_, maxWidth_, maxHeight_);
+	if (!st.ok())
+		return st;
+	try {
+		classifier.init(model, pyramid.rowStride(), pyramid.planeStride());
+		if (!std::isnan(cfg.cascadeThreshold))
+			classifier.setCascadeThreshold(cfg.cascadeThreshold);
+		if (cfg.resize != 1.0) {
+			resized_.assign(size_t(maxWidth_) * maxHeight_ * 3, 0);
+			const size_t taps = size_t(std::max(maxWidth_, maxHeight_)) + 8;
+			resizeX_.resize(taps);
+			resizeY_.resize(taps);
+			resizeRow_.assign(size_t(cfg.maxWidth) * 3 + 8, 0);
+		}
+		hits_.resize(cfg.maxCandidates);
+		candidates_.resize(cfg.maxCandidates);
+		sorted_.resize(cfg.maxCandidates);
+		order_.resize(cfg.maxCandidates);
+	} catch (const std::bad_alloc &) {
+		return Status::error(ErrorCode::OutOfMemory, "detector buffers do not fit in memory");
+	}
 	return Status::success();
 }
-Detector::~Detector() = default;
-Status Detector::detect(const ImageView &, Detections &out)
+
+Status DetectorImpl::checkImage(const ImageView &image) const
+{
+	if (image.width <= 0 || image.height <= 0 || !image.planes[0])
+		return Status::error(ErrorCode::ImageEmpty, "image is %dx%d with %s data",
+				     image.width, image.height, image.planes[0] ? "some" : "no");
+	if (image.format != PixelFormat::RGB8)
+		return Status::error(ErrorCode::UnsupportedPixelFormat,
+				     "only RGB8 images are supported by this detector");
+	if (image.strides[0] < 3 * image.width)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "stride %d is smaller than 3 x width %d", image.strides[0],
+				     image.width);
+	if (image.width > config.maxWidth || image.height > config.maxHeight)
+		return Status::error(ErrorCode::ImageTooLarge,
+				     "image %dx%d exceeds the configured maximum %dx%d", image.width,
+				     image.height, config.maxWidth, config.maxHeight);
+	return Status::success();
+}
+
+void DetectorImpl::addBoxes(int levelIndex, const kernels::WindowHit *hits, int count)
+{
+	const PyramidLevel &l = pyramid.scales().levels[levelIndex];
+	const ModelParams &p = params_;
+	// The box is the model's central window, shifted back by the padding.
+	const double shiftH = (p.modelDsPadH - double(p.modelDsH)) / 2 - p.padH;
+	const double shiftW = (p.modelDsPadW - double(p.modelDsW)) / 2 - p.padW;
+	const double r = config.resize;
+	for (int i = 0; i < count; i++) {
+		Detection &d = candidates_[candidateCount_++];
+		d.x = float((hits[i].col * p.stride + shiftW) / l.scaleW / r);
+		d.y = float((hits[i].row * p.stride + shiftH) / l.scaleH / r);
+		d.w = float(p.modelDsW / l.scale / r);
+		d.h = float(p.modelDsH / l.scale / r);
+		d.score = float(hits[i].score / double(1 << kScoreFracBits));
+	}
+}
+
+Status DetectorImpl::detect(const ImageView &image, Detections &out)
 {
 	out = Detections();
+	stats = FrameStats();
+	Status st = checkImage(image);
+	if (!st.ok())
+		return st;
+	const auto tStart = Clock::now();
+
+	const uint8_t *rgb = image.planes[0];
+	ptrdiff_t stride = image.strides[0];
+	int width = image.width, height = image.height;
+	if (config.resize != 1.0) {
+		const int w1 = scaledSize(width, config.resize), h1 = scaledSize(height, config.resize);
+		if (w1 < 1 || h1 < 1)
+			return Status::error(ErrorCode::ImageTooSmall, "resize leaves no pixels");
+		if (!kernels::buildResampleTaps(width, w1, 1.0, resizeX_.data()) ||
+		    !kernels::buildResampleTaps(height, h1, 1.0, resizeY_.data()))
+			return Status::error(ErrorCode::InvalidArgument, "resize ratio too small");
+		kernels::resampleRgb8_ref(rgb, stride, width, height, resized_.data(), 3 * w1, w1, h1,
+					  resizeX_.data(), resizeY_.data(), resizeRow_.data());
+		rgb = resized_.data();
+		stride = 3 * w1;
+		width = w1;
+		height = h1;
+	}
+	stats.msResize = msSince(tStart);
+
+	st = pyramid.build(rgb, stride, width, height);
+	if (!st.ok())
+		return st;
+
+	const ScaleList &scales = pyramid.scales();
+	candidateCount_ = 0;
+	double msClassify = 0;
+	for (int i = 0; i < scales.count; i++) {
+		const LevelChannels level = pyramid.level(i);
+		const auto t0 = Clock::now();
+		const uint64_t room = uint64_t(config.maxCandidates - candidateCount_);
+		const uint64_t passed = classifier.scan(level, hits_.data(), room, &stats.windows);
+		const uint64_t kept = std::min(passed, room);
+		addBoxes(i, hits_.data(), int(kept));
+		stats.candidates += passed;
+		stats.droppedWindows += passed - kept;
+		msClassify += msSince(t0);
+		stats.computedLevels += scales.levels[i].computed ? 1 : 0;
+	}
+	stats.levels = scales.count;
+
+	const auto tNms = Clock::now();
+	const float overlap = config.disableNms ? INFINITY : params_.nmsOverlap;
+	const bool useUnion = params_.nmsOverlapDenominator == NmsOverlapDenominator::Union;
+	const int kept = nmsGreedy(candidates_.data(), candidateCount_, overlap, useUnion,
+				   order_.data(), sorted_.data());
+	stats.msNms = msSince(tNms);
+
+	stats.msChannels = pyramid.msChannels;
+	stats.msApprox = pyramid.msApprox + pyramid.msSmooth;
+	stats.msClassify = msClassify;
+	stats.msTotal = msSince(tStart);
+	out.items = candidates_.data();
+	out.count = kept;
 	return Status::success();
 }
+
+Status Detector::create(const Model &model, const DetectorConfig &config,
+			std::unique_ptr<Detector> &out)
+{
+	out.reset();
+	std::unique_ptr<Detector> d(new (std::nothrow) Detector());
+	if (!d)
+		return Status::error(ErrorCode::OutOfMemory, "detector");
+	d->impl_.reset(new (std::nothrow) DetectorImpl());
+	if (!d->impl_)
+		return Status::error(ErrorCode::OutOfMemory, "detector");
+	Status st = d->impl_->init(model, config);
+	if (!st.ok())
+		return st;
+	out = std::move(d);
+	return Status::success();
+}
+
+Detector::~Detector() = default;
+
+Status Detector::detect(const ImageView &image, Detections &out)
+{
+	return impl_->detect(image, out);
+}
+
 const FrameStats &Detector::lastStats() const { return impl_->stats; }
 const DetectorConfig &Detector::config() const { return impl_->config; }
+
 } // namespace calped

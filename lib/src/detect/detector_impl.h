@@ -1,11 +1,45 @@
 // SPDX-License-Identifier: BSD-2-Clause
+// The generic-mode detector behind calped::Detector: input resize, pyramid, sliding
+// window classifier over every level, NMS. Everything is allocated in init().
 #pragma once
+
 #include <calped/detector.h>
+
+#include <vector>
+
+#include "detect/classifier.h"
+#include "kernels.h"
+#include "pyramid/pyramid.h"
+
 namespace calped {
+
 class DetectorImpl
 {
 public:
+	Status init(const Model &model, const DetectorConfig &config);
+	Status detect(const ImageView &image, Detections &out);
+
 	DetectorConfig config;
 	FrameStats stats;
+	Pyramid pyramid;
+	Classifier classifier;
+
+private:
+	Status checkImage(const ImageView &image) const;
+	// Window hits of one level to boxes in input-image pixels, appended to candidates_.
+	void addBoxes(int level, const kernels::WindowHit *hits, int count);
+
+	ModelParams params_;
+	int maxWidth_ = 0, maxHeight_ = 0;
+	// Input resampling ("resize").
+	std::vector<uint8_t> resized_;
+	std::vector<kernels::ResampleTap> resizeX_, resizeY_;
+	std::vector<int32_t> resizeRow_;
+	// Per-frame results.
+	std::vector<kernels::WindowHit> hits_;
+	std::vector<Detection> candidates_, sorted_;
+	std::vector<int> order_;
+	int candidateCount_ = 0;
 };
+
 } // namespace calped

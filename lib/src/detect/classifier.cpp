@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: BSD-2-Clause
+#include "detect/classifier.h"
+
+#include <cmath>
+
+namespace calped {
+
+namespace {
+
+// A complete depth-2 tree in the toolbox's layout: root -> 1, 2; 1 -> 3, 4; 2 -> 5, 6.
+bool isCompleteDepth2(const Model &m, int t)
+{
+	if (m.nodesPerTree < 7)
+		return false;
+	const uint32_t *child = m.child.data() + size_t(t) * m.nodesPerTree;
+	return child[0] == 1 && child[1] == 3 && child[2] == 5 && child[3] == 0 &&
+	       child[4] == 0 && child[5] == 0 && child[6] == 0;
+}
+
+} // namespace
+
+void Classifier::init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeStride)
+{
+	params_ = model.params;
+	nTrees_ = model.nTrees;
+	nodesPerTree_ = model.nodesPerTree;
+	setCascadeThreshold(model.params.cascThr);
+
+	// Feature id -> offset: ids run down the window's rows, then columns, then channels.
+	const int rows = model.params.modelDsPadH / model.params.shrink;
+	const int cols = model.params.modelDsPadW / model.params.shrink;
+	auto offset = [&](uint32_t fid) {
+		const uint32_t r = fid % rows, c = (fid / rows) % cols, z = fid / (rows * cols);
+		return static_cast<uint32_t>(z * planeStride + r * rowStride + c);
+	};
+
+	depth2_ = true;
+	for (int t = 0; t < nTrees_ && depth2_; t++)
+		depth2_ = isCompleteDepth2(model, t);
+
+	if (depth2_) {
+		depth2Trees_.resize(nTrees_);
+		for (int t = 0; t < nTrees_; t++) {
+			const size_t b = size_t(t) * nodesPerTree_;
+			kernels::Depth2Tree &d = depth2Trees_[t];
+			for (int k = 0; k < 3; k++) {
+				d.off[k] = offset(model.fids[b + k]);
+				d.thr[k] = model.thrs[b + k];
+			}
+			for (int k = 0; k < 4; k++)
+				d.leaf[k] = model.hs[b + 3 + k];
+		}
+	} else {
+		nodes_.resize(size_t(nTrees_) * nodesPerTree_);
+		for (size_t i = 0; i < nodes_.size(); i++) {
+			kernels::TreeNode &n = nodes_[i];
+			n.child = model.child[i];
+			n.off = n.child ? offset(model.fids[i]) : 0;
+			n.thr = model.thrs[i];
+			n.leaf = model.hs[i];
+		}
+	}
+}
+
+void Classifier::setCascadeThreshold(float thr)
+{
+	// A Q16 score h satisfies h / 2^16 <= thr exactly when h <= floor(thr * 2^16).
+	cascThr_ = static_cast<int32_t>(std::floor(double(thr) * (1 << kScoreFracBits)));
+}
+
+uint64_t Classifier::scan(const LevelChannels &level, kernels::WindowHit *hits,
+			  uint64_t capacity, uint64_t *windows) const
+{
+	const int shrink = params_.shrink, stride = params_.stride;
+	// The toolbox's window counts: ceil((size * shrink - model + 1) / stride).
+	const int rows = (level.paddedHeight * shrink - params_.modelDsPadH + stride) / stride;
+	const int cols = (level.paddedWidth * shrink - params_.modelDsPadW + stride) / stride;
+	if (rows <= 0 || cols <= 0)
+		return 0;
+	*windows += uint64_t(rows) * cols;
+	const int step = stride / shrink;
+	if (depth2_)
+		return kernels::scanDepth2_ref(level.data, level.rowStride, rows, cols, step,
+					       depth2Trees_.data(), nTrees_, cascThr_, hits, capacity);
+	return kernels::scanTrees_ref(level.data, level.rowStride, rows, cols, step, nodes_.data(),
+				      nTrees_, nodesPerTree_, cascThr_, hits, capacity);
+}
+
+} // namespace calped

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The boosted trees laid out for one pyramid layout: every feature id resolved once,
+// at setup, to an offset into the level buffer (channel, row and column strides are
+// fixed for the pyramid's lifetime).
+#pragma once
+
+#include <calped/model.h>
+
+#include <vector>
+
+#include "kernels.h"
+#include "pyramid/pyramid.h"
+
+namespace calped {
+
+class Classifier
+{
+public:
+	void init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeStride);
+
+	// Windows of one level: returns how many passed the cascade (the first `capacity`
+	// are written to hits) and adds the windows evaluated to *windows.
+	uint64_t scan(const LevelChannels &level, kernels::WindowHit *hits, uint64_t capacity,
+		      uint64_t *windows) const;
+
+	int32_t cascadeThreshold() const { return cascThr_; }
+	void setCascadeThreshold(float thr);
+
+private:
+	ModelParams params_;
+	int nTrees_ = 0, nodesPerTree_ = 0;
+	bool depth2_ = false;
+	int32_t cascThr_ = 0;
+	std::vector<kernels::Depth2Tree> depth2Trees_;
+	std::vector<kernels::TreeNode> nodes_;
+};
+
+} // namespace calped

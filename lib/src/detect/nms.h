@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Greedy non-maximum suppression (the toolbox's bbNms type 'maxg').
+#pragma once
+
+#include <calped/detector.h>
+
+namespace calped {
+
+// Sorts `boxes` by descending score (ties keep their order) and removes, greedily, every
+// box whose overlap with a kept higher-scoring box exceeds `overlap`; overlap is the
+// intersection over the smaller box's area (useUnion false) or over the union.
+// `order` and `keep` are scratch of n elements. Returns the number of boxes kept,
+// compacted to the front of `boxes` in score order.
+int nmsGreedy(Detection *boxes, int n, float overlap, bool useUnion, int *order, Detection *tmp);
+
+} // namespace calped
