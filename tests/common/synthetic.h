@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Inputs the tests make themselves, so they run without ../shared.
+#pragma once
+
+#include <calped/model.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace calped {
+namespace test {
+
+// A valid model with the INRIA model's options and nTrees random complete depth-2 trees.
+Model randomModel(uint32_t seed, int nTrees = 256);
+
+// An RGB image with smooth gradients, edges and noise (deterministic for a seed).
+std::vector<uint8_t> randomImage(uint32_t seed, int width, int height);
+
+} // namespace test
+} // namespace calped

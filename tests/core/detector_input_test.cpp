@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Bad frames and bad configurations get a documented error, and the detector keeps
+// working afterwards.
+#include <gtest/gtest.h>
+
+#include <calped/detector.h>
+
+#include "synthetic.h"
+
+using namespace calped;
+
+namespace {
+
+std::unique_ptr<Detector> makeDetector(double resize = 1.0)
+{
+	DetectorConfig cfg;
+	cfg.maxWidth = 320;
+	cfg.maxHeight = 240;
+	cfg.resize = resize;
+	std::unique_ptr<Detector> det;
+	const Status st = Detector::create(test::randomModel(3), cfg, det);
+	EXPECT_TRUE(st.ok()) << st.message();
+	return det;
+}
+
+// The detector still runs on a good frame after a failure.
+void expectHealthy(Detector &det)
+{
+	const auto img = test::randomImage(1, 320, 240);
+	Detections d;
+	const Status st = det.detect(ImageView::rgb8(img.data(), 320, 240), d);
+	EXPECT_TRUE(st.ok()) << st.message();
+	EXPECT_GT(det.lastStats().windows, 0u);
+}
+
+ErrorCode detectCode(Detector &det, const ImageView &v)
+{
+	Detections d;
+	const Status st = det.detect(v, d);
+	EXPECT_EQ(d.count, 0);
+	if (!st.ok())
+		EXPECT_NE(std::string(st.message()).find(errorCodeName(st.code())), std::string::npos)
+			<< "message names its error: " << st.message();
+	return st.code();
+}
+
+} // namespace
+
+TEST(DetectorInput, EmptyImages)
+{
+	auto det = makeDetector();
+	const auto img = test::randomImage(1, 320, 240);
+	EXPECT_EQ(detectCode(*det, ImageView::rgb8(img.data(), 0, 0)), ErrorCode::ImageEmpty);
+	EXPECT_EQ(detectCode(*det, ImageView::rgb8(img.data(), 0, 240)), ErrorCode::ImageEmpty);
+	EXPECT_EQ(detectCode(*det, ImageView::rgb8(nullptr, 320, 240)), ErrorCode::ImageEmpty);
+	expectHealthy(*det);
+}
+
+TEST(DetectorInput, TooSmallForTheModel)
+{
+	for (double resize : { 1.0, 2.0 }) {
+		auto det = makeDetector(resize);
+		// Sizes that, once resized, are narrower than 41 or lower than 100 pixels.
+		const int k = int(resize);
+		for (auto [w, h] : { std::pair{ 1, 1 }, { 2, 3 }, { 40 / k, 99 / k }, { 40 / k, 240 },
+				     { 320, 99 / k } }) {
+			const auto img = test::randomImage(2, w, h);
+			const ErrorCode code = detectCode(*det, ImageView::rgb8(img.data(), w, h));
+			EXPECT_EQ(code, ErrorCode::ImageTooSmall) << w << "x" << h << " resize " << resize;
+		}
+		expectHealthy(*det);
+	}
+}
+
+TEST(DetectorInput, OddSizesRun)
+{
+	auto det = makeDetector();
+	for (auto [w, h] : { std::pair{ 41, 100 }, { 43, 101 }, { 127, 131 }, { 319, 239 }, { 257, 233 } }) {
+		const auto img = test::randomImage(3, w, h);
+		Detections d;
+		const Status st = det->detect(ImageView::rgb8(img.data(), w, h), d);
+		EXPECT_TRUE(st.ok()) << w << "x" << h << ": " << st.message();
+		EXPECT_GE(det->lastStats().levels, 1) << w << "x" << h;
+	}
+	expectHealthy(*det);
+}
+
+TEST(DetectorInput, LargerThanConfigured)
+{
+	auto det = makeDetector();
+	const auto img = test::randomImage(4, 321, 240);
+	EXPECT_EQ(detectCode(*det, ImageView::rgb8(img.data(), 321, 240)), ErrorCode::ImageTooLarge);
+	expectHealthy(*det);
+}
+
+TEST(DetectorInput, WrongFormatAndStride)
+{
+	auto det = makeDetector();
+	const auto img = test::randomImage(5, 320, 240);
+	ImageView v = ImageView::rgb8(img.data(), 320, 240);
+	v.format = PixelFormat::NV12;
+	EXPECT_EQ(detectCode(*det, v), ErrorCode::UnsupportedPixelFormat);
+	EXPECT_EQ(detectCode(*det, ImageView::rgb8(img.data(), 320, 240, 100)), ErrorCode::InvalidArgument);
+	expectHealthy(*det);
+}
+
+TEST(DetectorInput, StrideIsHonoured)
+{
+	// The same pixels packed and inside wider rows give the same detections.
+	auto det = makeDetector();
+	const int w = 200, h = 150, stride = 3 * w + 37;
+	const auto packed = test::randomImage(6, w, h);
+	std::vector<uint8_t> padded(size_t(stride) * h, 0xAB);
+	for (int y = 0; y < h; y++)
+		std::copy(packed.begin() + size_t(y) * 3 * w, packed.begin() + size_t(y + 1) * 3 * w,
+			  padded.begin() + size_t(y) * stride);
+	Detections a, b;
+	ASSERT_TRUE(det->detect(ImageView::rgb8(packed.data(), w, h), a).ok());
+	std::vector<Detection> first(a.begin(), a.end());
+	ASSERT_TRUE(det->detect(ImageView::rgb8(padded.data(), w, h, stride), b).ok());
+	ASSERT_EQ(first.size(), size_t(b.count));
+	for (int i = 0; i < b.count; i++) {
+		EXPECT_EQ(first[i].x, b.items[i].x);
+		EXPECT_EQ(first[i].score, b.items[i].score);
+	}
+}
+
+TEST(DetectorInput, BadConfigurations)
+{
+	const Model model = test::randomModel(3);
+	std::unique_ptr<Detector> det;
+	DetectorConfig cfg;
+	cfg.maxWidth = 0;
+	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);
+	cfg = DetectorConfig();
+	cfg.resize = 0;
+	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);
+	cfg.resize = 100;
+	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);
+	cfg = DetectorConfig();
+	cfg.maxCandidates = 0;
+	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);
+	EXPECT_EQ(det, nullptr);
+	Model broken = model;
+	broken.fids[0] = 1u << 30;
+	EXPECT_EQ(Detector::create(broken, DetectorConfig(), det).code(), ErrorCode::ModelInvalid);
+}
+
+TEST(DetectorInput, CandidateOverflowIsCounted)
+{
+	DetectorConfig cfg;
+	cfg.maxWidth = 320;
+	cfg.maxHeight = 240;
+	cfg.maxCandidates = 5;
+	cfg.cascadeThreshold = -1e6f; // every window passes
+	cfg.disableNms = true;
+	std::unique_ptr<Detector> det;
+	ASSERT_TRUE(Detector::create(test::randomModel(3), cfg, det).ok());
+	const auto img = test::randomImage(1, 320, 240);
+	Detections d;
+	ASSERT_TRUE(det->detect(ImageView::rgb8(img.data(), 320, 240), d).ok());
+	const FrameStats &s = det->lastStats();
+	EXPECT_EQ(d.count, 5);
+	EXPECT_EQ(s.candidates, s.windows);
+	EXPECT_EQ(s.droppedWindows, s.windows - 5);
+}
