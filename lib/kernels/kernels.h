@@ -73,11 +73,17 @@ void resamplePlane_ref(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, i
 		       uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 		       const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 		       ptrdiff_t tmpStride);
+void resamplePlane_opt(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+		       uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		       const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
+		       ptrdiff_t tmpStride);
 
 // ---- smoothing ---------------------------------------------------------------------------
 // convTri with radius 1: [1 2 1]/4 in both directions, borders replicated. dst may not
 // alias src. rowTmp holds width uint32.
 void smoothTri1_ref(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
+		    ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp);
+void smoothTri1_opt(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
 		    ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp);
 
 // ---- gradients ---------------------------------------------------------------------------
@@ -106,8 +112,15 @@ void gradMagOrient_ref(const GradientTables &t, const uint16_t *const planes[3],
 		       ptrdiff_t outStride, int32_t *scratch);
 
 // Triangle filter of radius r (the toolbox's convTri, symmetric borders) without the
-// final division: out = sum of weights * in, weights summing to (r+1)^4.
+// final division: out = sum of weights * in, weights summing to (r+1)^4. scratch holds
+// triSumScratchSize(width, height, r) uint32.
+inline size_t triSumScratchSize(int width, int height, int r)
+{
+	return size_t(width) * height + size_t(r + 6) * (width + 2 * r) + height;
+}
 void triSumR_ref(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
+		 int width, int height, int r, uint32_t *scratch);
+void triSumR_opt(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
 		 int width, int height, int r, uint32_t *scratch);
 
 // mag / (smoothedSum / (r+1)^4 + c): Q16 magnitude in, Q14 channel out, in place
@@ -162,6 +175,29 @@ uint64_t scanDepth2_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int
 uint64_t scanTrees_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
 		       const TreeNode *nodes, int nTrees, int nodesPerTree, int32_t cascThr,
 		       WindowHit *hits, uint64_t capacity);
+
+// ---- dispatch ----------------------------------------------------------------------------
+// The kernels one pipeline uses, chosen once at setup. Every entry of every table
+// produces output bit-identical to the reference table's.
+struct KernelTable {
+	const char *name;
+	decltype(&rgbToLuv_ref) rgbToLuv;
+	decltype(&resampleRgb8_ref) resampleRgb8;
+	decltype(&resamplePlane_ref) resamplePlane;
+	decltype(&smoothTri1_ref) smoothTri1;
+	decltype(&gradMagOrient_ref) gradMagOrient;
+	decltype(&triSumR_ref) triSum;
+	decltype(&normalizeMag_ref) normalizeMag;
+	decltype(&shrink4_ref) shrink4;
+	decltype(&gradHist4_ref) gradHist4;
+	decltype(&scanDepth2_ref) scanDepth2;
+	decltype(&scanTrees_ref) scanTrees;
+};
+
+// The plain scalar references (the specification).
+const KernelTable &referenceKernels();
+// The fastest kernels this build and CPU support.
+const KernelTable &bestKernels();
 
 } // namespace kernels
 } // namespace calped

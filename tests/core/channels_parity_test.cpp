@@ -32,7 +32,7 @@ TEST(ChannelsParity, Frame1NativeWithinTolerance)
 
 	ModelParams params;
 	ChannelComputer cc;
-	cc.init(params, w, h);
+	cc.init(params, w, h, kernels::bestKernels());
 	Plane<const uint16_t> in[3];
 	for (int c = 0; c < 3; c++)
 		in[c] = { luv.data() + size_t(c) * w * h, w, h, w };

@@ -5,9 +5,12 @@
 
 namespace calped {
 
-void ChannelComputer::init(const ModelParams &params, int maxWidth, int maxHeight)
+void ChannelComputer::init(const ModelParams &params, int maxWidth, int maxHeight,
+			   const kernels::KernelTable &k)
 {
 	params_ = params;
+	k_ = &k;
+	triScratch_.assign(kernels::triSumScratchSize(maxWidth, maxHeight, params.gradNormRad), 0);
 	kernels::buildGradientTables(grad_, params.nOrients, params.gradNormRad,
 				     params.gradNormConst);
 	for (auto &p : smoothed_)
@@ -28,12 +31,12 @@ void ChannelComputer::compute(const Plane<const uint16_t> luv[3], int width, int
 	for (int c = 0; c < 3; c++) {
 		Plane<uint16_t> s = smoothed_[c].view(width, height);
 		if (params_.colorSmooth > 0)
-			kernels::smoothTri1_ref(luv[c].data, luv[c].stride, s.data, s.stride, width,
+			k_->smoothTri1(luv[c].data, luv[c].stride, s.data, s.stride, width,
 						height, rowTmp_.data());
 		else
 			for (int y = 0; y < height; y++)
 				std::copy(luv[c].row(y), luv[c].row(y) + width, s.row(y));
-		kernels::shrink4_ref(s.data, s.stride, width, height, out[c].data, out[c].stride,
+		k_->shrink4(s.data, s.stride, width, height, out[c].data, out[c].stride,
 				     kernels::kLuvQ - kernels::kQ);
 		smoothedPlanes[c] = s.data;
 	}
@@ -41,26 +44,26 @@ void ChannelComputer::compute(const Plane<const uint16_t> luv[3], int width, int
 	// Gradient magnitude (max over colour channels) and orientation.
 	Plane<uint16_t> mag = mag_.view(width, height);
 	Plane<uint16_t> orient = orient_.view(width, height);
-	kernels::gradMagOrient_ref(grad_, smoothedPlanes, width, width, height, mag.data,
+	k_->gradMagOrient(grad_, smoothedPlanes, width, width, height, mag.data,
 				   orient.data, mag.stride, gradScratch_.data());
 
 	// Normalised by its own local average: M / (convTri(M, normRad) + normConst).
 	if (params_.gradNormRad > 0) {
 		Plane<uint32_t> sum = magSum_.view(width, height);
-		kernels::triSumR_ref(mag.data, mag.stride, sum.data, sum.stride, width, height,
-				     params_.gradNormRad, rowTmp_.data());
-		kernels::normalizeMag_ref(grad_, mag.data, mag.stride, sum.data, sum.stride,
+		k_->triSum(mag.data, mag.stride, sum.data, sum.stride, width, height,
+			   params_.gradNormRad, triScratch_.data());
+		k_->normalizeMag(grad_, mag.data, mag.stride, sum.data, sum.stride,
 					  width, height);
 	}
 	// Normalisation already produced Q14; a raw magnitude is still Q16.
 	const int magShift = params_.gradNormRad > 0 ? 0 : kernels::kLuvQ - kernels::kQ;
-	kernels::shrink4_ref(mag.data, mag.stride, width, height, out[3].data, out[3].stride,
+	k_->shrink4(mag.data, mag.stride, width, height, out[3].data, out[3].stride,
 			     magShift);
 
 	uint16_t *hist[16];
 	for (int o = 0; o < params_.nOrients; o++)
 		hist[o] = out[4 + o].data;
-	kernels::gradHist4_ref(mag.data, orient.data, mag.stride, width, height,
+	k_->gradHist4(mag.data, orient.data, mag.stride, width, height,
 			       params_.nOrients, params_.softBin >= 0, hist, out[4].stride,
 			       rowTmp_.data());
 }

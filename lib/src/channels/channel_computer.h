@@ -17,7 +17,8 @@ class ChannelComputer
 {
 public:
 	// Allocates scratch for LUV images up to maxWidth x maxHeight pixels.
-	void init(const ModelParams &params, int maxWidth, int maxHeight);
+	void init(const ModelParams &params, int maxWidth, int maxHeight,
+		  const kernels::KernelTable &k);
 
 	// luv: three Q16 planes of width x height (multiples of 4, within the maximum);
 	// out: ten planes of width/4 x height/4.
@@ -28,11 +29,13 @@ public:
 
 private:
 	ModelParams params_;
+	const kernels::KernelTable *k_ = nullptr;
 	kernels::GradientTables grad_;
 	PlaneBuffer<uint16_t> smoothed_[3];
 	PlaneBuffer<uint16_t> mag_, orient_;
 	PlaneBuffer<uint32_t> magSum_;
 	std::vector<uint32_t> rowTmp_;
+	std::vector<uint32_t> triScratch_;
 	std::vector<int32_t> gradScratch_;
 };
 

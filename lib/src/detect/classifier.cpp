@@ -19,8 +19,10 @@ bool isCompleteDepth2(const Model &m, int t)
 
 } // namespace
 
-void Classifier::init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeStride)
+void Classifier::init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeStride,
+		      const kernels::KernelTable &k)
 {
+	k_ = &k;
 	params_ = model.params;
 	nTrees_ = model.nTrees;
 	nodesPerTree_ = model.nodesPerTree;
@@ -80,9 +82,9 @@ uint64_t Classifier::scan(const LevelChannels &level, kernels::WindowHit *hits,
 	*windows += uint64_t(rows) * cols;
 	const int step = stride / shrink;
 	if (depth2_)
-		return kernels::scanDepth2_ref(level.data, level.rowStride, rows, cols, step,
+		return k_->scanDepth2(level.data, level.rowStride, rows, cols, step,
 					       depth2Trees_.data(), nTrees_, cascThr_, hits, capacity);
-	return kernels::scanTrees_ref(level.data, level.rowStride, rows, cols, step, nodes_.data(),
+	return k_->scanTrees(level.data, level.rowStride, rows, cols, step, nodes_.data(),
 				      nTrees_, nodesPerTree_, cascThr_, hits, capacity);
 }
 

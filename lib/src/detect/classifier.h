@@ -16,7 +16,8 @@ namespace calped {
 class Classifier
 {
 public:
-	void init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeStride);
+	void init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeStride,
+		  const kernels::KernelTable &k = kernels::bestKernels());
 
 	// Windows of one level: returns how many passed the cascade (the first `capacity`
 	// are written to hits) and adds the windows evaluated to *windows.
@@ -28,6 +29,7 @@ public:
 
 private:
 	ModelParams params_;
+	const kernels::KernelTable *k_ = nullptr;
 	int nTrees_ = 0, nodesPerTree_ = 0;
 	bool depth2_ = false;
 	int32_t cascThr_ = 0;

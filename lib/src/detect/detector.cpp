@@ -127,7 +127,7 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 		if (!kernels::buildResampleTaps(width, w1, 1.0, resizeX_.data()) ||
 		    !kernels::buildResampleTaps(height, h1, 1.0, resizeY_.data()))
 			return Status::error(ErrorCode::InvalidArgument, "resize ratio too small");
-		kernels::resampleRgb8_ref(rgb, stride, width, height, resized_.data(), 3 * w1, w1, h1,
+		kernels::bestKernels().resampleRgb8(rgb, stride, width, height, resized_.data(), 3 * w1, w1, h1,
 					  resizeX_.data(), resizeY_.data(), resizeRow_.data());
 		rgb = resized_.data();
 		stride = 3 * w1;

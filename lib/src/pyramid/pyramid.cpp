@@ -27,8 +27,10 @@ void planesAt(uint16_t *base, int width, int height, Plane<uint16_t> out[kChanne
 
 } // namespace
 
-Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight)
+Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
+		     const kernels::KernelTable &k)
 {
+	k_ = &k;
 	if (params.shrink != 4 || params.nOrients != 6 || params.gradFull != 0 ||
 	    params.gradColorChn != 0 || params.pyramidSmooth > 1 || params.colorSmooth > 1 ||
 	    params.histBinSize != params.shrink)
@@ -44,7 +46,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight)
 		// The first computed scale is 2^nOctUp: that image is the largest one processed.
 		const int up = 1 << params.nOctUp;
 		const int luvW = maxWidth * up + 8, luvH = maxHeight * up + 8;
-		channels_.init(params, luvW, luvH);
+		channels_.init(params, luvW, luvH, k);
 		for (int c = 0; c < 3; c++) {
 			luv_[c].allocate(maxWidth, maxHeight);
 			halfLuv_[c].allocate(maxWidth / 2 + 4, maxHeight / 2 + 4);
@@ -93,7 +95,7 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width, height);
-	kernels::rgbToLuv_ref(luvTables_, rgb, stride, width, height, luv[0].data, luv[1].data,
+	k_->rgbToLuv(luvTables_, rgb, stride, width, height, luv[0].data, luv[1].data,
 			      luv[2].data, luv[0].stride);
 
 	// Computed levels, from the largest: each is resampled from the whole image, or
@@ -120,7 +122,7 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 			Plane<uint16_t> dst[3];
 			for (int c = 0; c < 3; c++) {
 				dst[c] = isHalf ? halfLuv_[c].view(w1, h1) : levelLuv_[c].view(w1, h1);
-				kernels::resamplePlane_ref(source[c].data, source[c].stride, source[c].width,
+				k_->resamplePlane(source[c].data, source[c].stride, source[c].width,
 							   source[c].height, dst[c].data, dst[c].stride,
 							   w1, h1, xTaps_.data(), yTaps_.data(), tmp.data,
 							   tmp.stride);
@@ -170,7 +172,7 @@ void Pyramid::approximate(int i, Plane<uint16_t> out[kChannelCount])
 			kernels::buildResampleTaps(r.height, l.height, gain, yTapsGain_.data());
 			builtFor = type;
 		}
-		kernels::resamplePlane_ref(src[c].data, src[c].stride, r.width, r.height, out[c].data,
+		k_->resamplePlane(src[c].data, src[c].stride, r.width, r.height, out[c].data,
 					   out[c].stride, l.width, l.height, xTaps_.data(),
 					   yTapsGain_.data(), tmp.data, tmp.stride);
 	}
@@ -195,7 +197,7 @@ LevelChannels Pyramid::level(int i)
 		uint16_t *plane = levelBuf_.data() + c * planeStride_;
 		uint16_t *inner = plane + padH_ * rowStride_ + padW_;
 		if (params_.pyramidSmooth > 0)
-			kernels::smoothTri1_ref(raw[c].data, raw[c].stride, inner, rowStride_, w, h,
+			k_->smoothTri1(raw[c].data, raw[c].stride, inner, rowStride_, w, h,
 						rowTmp_.data());
 		else
 			for (int y = 0; y < h; y++)

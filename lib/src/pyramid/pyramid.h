@@ -29,7 +29,8 @@ class Pyramid
 {
 public:
 	// maxWidth x maxHeight: the largest RGB image build() will see (after any resize).
-	Status init(const ModelParams &params, int maxWidth, int maxHeight);
+	Status init(const ModelParams &params, int maxWidth, int maxHeight,
+		    const kernels::KernelTable &k = kernels::bestKernels());
 
 	// Colour conversion and channels of every computed level for one RGB8 image.
 	Status build(const uint8_t *rgb, ptrdiff_t stride, int width, int height);
@@ -52,6 +53,7 @@ private:
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
 
 	ModelParams params_;
+	const kernels::KernelTable *k_ = nullptr;
 	kernels::LuvTables luvTables_;
 	ChannelComputer channels_;
 	ScaleList scales_;
