@@ -32,7 +32,7 @@ const KernelTable &bestKernels()
 		resampleRgb8_ref,
 		resamplePlane_opt,
 		smoothTri1_opt,
-		gradMagOrient_ref,
+		gradMagOrient_opt,
 		triSumR_opt,
 		normalizeMag_ref,
 		shrink4_ref,

@@ -110,6 +110,10 @@ void buildGradientTables(GradientTables &t, int nOrients, int normRad, double no
 void gradMagOrient_ref(const GradientTables &t, const uint16_t *const planes[3],
 		       ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
 		       ptrdiff_t outStride, int32_t *scratch);
+// scratch: 4 * width int32.
+void gradMagOrient_opt(const GradientTables &t, const uint16_t *const planes[3],
+		       ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
+		       ptrdiff_t outStride, int32_t *scratch);
 
 // Triangle filter of radius r (the toolbox's convTri, symmetric borders) without the
 // final division: out = sum of weights * in, weights summing to (r+1)^4. scratch holds

@@ -102,3 +102,27 @@ TEST(KernelEquality, ResampleTapsKeepFlatInputFlat)
 			}
 		}
 }
+
+TEST(KernelEquality, GradientMagnitudeOrientation)
+{
+	std::mt19937 rng(4);
+	GradientTables t;
+	buildGradientTables(t, 6, 5, 0.005);
+	for (const KernelTable *k : tablesUnderTest())
+		for (Size s : kSizes)
+			for (int maxValue : { 65535, 300, 3 }) { // strong edges, weak ones, near-flat
+				const int stride = s.w + 5;
+				std::vector<uint16_t> planes[3];
+				const uint16_t *p[3];
+				for (int c = 0; c < 3; c++) {
+					planes[c] = randomPlane(rng, size_t(stride) * s.h, maxValue);
+					p[c] = planes[c].data();
+				}
+				std::vector<uint16_t> ma(size_t(stride) * s.h, 1), oa = ma, mb = ma, ob = ma;
+				std::vector<int32_t> scratch(4 * s.w + 16);
+				gradMagOrient_ref(t, p, stride, s.w, s.h, ma.data(), oa.data(), stride, scratch.data());
+				k->gradMagOrient(t, p, stride, s.w, s.h, mb.data(), ob.data(), stride, scratch.data());
+				ASSERT_EQ(ma, mb) << k->name << " magnitude " << s.w << "x" << s.h;
+				ASSERT_EQ(oa, ob) << k->name << " orientation " << s.w << "x" << s.h;
+			}
+}

@@ -24,10 +24,27 @@ void resamplePlane_opt(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, i
 		       const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 		       ptrdiff_t tmpStride)
 {
-	(void)srcWidth;
+	// Along rows. Outputs of at most three taps (enlarging, and shrinking by up to 2x,
+	// which is every use in the pyramid) take a fixed three-tap form: a missing tap
+	// reads the first sample again with weight 0, so no read leaves the row.
+	bool threeTaps = true;
+	for (int x = 0; x < dstWidth && threeTaps; x++)
+		threeTaps = xTaps[x].count <= 3;
 	for (int y = 0; y < srcHeight; y++) {
 		const uint16_t *in = src + y * srcStride;
 		uint16_t *out = tmp + y * tmpStride;
+		if (threeTaps) {
+			for (int x = 0; x < dstWidth; x++) {
+				const ResampleTap &t = xTaps[x];
+				const uint16_t *p = in + t.first;
+				const int n = t.count;
+				const uint32_t w1 = n > 1 ? uint32_t(t.weight[1]) : 0;
+				const uint32_t w2 = n > 2 ? uint32_t(t.weight[2]) : 0;
+				const uint16_t v1 = p[n > 1 ? 1 : 0], v2 = p[n > 2 ? 2 : 0];
+				out[x] = roundQ14(uint32_t(t.weight[0]) * p[0] + w1 * v1 + w2 * v2);
+			}
+			continue;
+		}
 		for (int x = 0; x < dstWidth; x++) {
 			const ResampleTap &t = xTaps[x];
 			const uint16_t *p = in + t.first;
@@ -37,6 +54,7 @@ void resamplePlane_opt(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, i
 			out[x] = roundQ14(acc);
 		}
 	}
+	(void)srcWidth;
 	for (int y = 0; y < dstHeight; y++) {
 		const ResampleTap &t = yTaps[y];
 		uint16_t *out = dst + y * dstStride;

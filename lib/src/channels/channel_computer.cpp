@@ -20,7 +20,7 @@ void ChannelComputer::init(const ModelParams &params, int maxWidth, int maxHeigh
 	magSum_.allocate(maxWidth, maxHeight);
 	const size_t longest = size_t(std::max(maxWidth, maxHeight));
 	rowTmp_.assign(std::max(longest, size_t(params.nOrients) * (maxWidth / 4 + 1)), 0);
-	gradScratch_.assign(longest * 2, 0);
+	gradScratch_.assign(longest * 4 + 16, 0);
 }
 
 void ChannelComputer::compute(const Plane<const uint16_t> luv[3], int width, int height,
