@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-2-Clause
+# THE TEST COMMAND. Installs dependencies and the first 50 PETS frames (data/pets/frames),
+# then builds and runs the whole test suite twice:
+#   build/       release
+#   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (any report fails the test)
+# The last line is "N passed, N failed, N skipped", counting GoogleTest cases of both runs.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+start=$SECONDS
+jobs=${CALPED_JOBS:-2}
+export CALPED_JOBS=$jobs
+
+bash scripts/install-deps.sh
+# The parity tests compare with Dollár's toolbox on PETS frames 1-50 and skip without them.
+# A failed download is not a test failure, but it must not pass unnoticed.
+if ! bash scripts/fetch-pets.sh 50; then
+	echo "run-tests: WARNING: no PETS frames; the tests that need them will be skipped" >&2
+fi
+
+failed_steps=()
+junits=()
+
+# run_suite NAME BUILDDIR [meson options...]: build, then meson test; failures are
+# recorded, not fatal, so the second tree still runs and the summary is always printed.
+run_suite() {
+	local name=$1 builddir=$2
+	shift 2
+	echo
+	echo "=== $name: $builddir"
+	if ! bash scripts/build.sh "$builddir" "$@"; then
+		failed_steps+=("$name build")
+		return
+	fi
+	local log="$builddir/meson-logs/testlog.junit.xml"
+	rm -f "$log"
+	# gtest leaves NAME.xml beside each test; a stale one must not stand in for a crash.
+	find "$builddir" -maxdepth 1 -name '*.xml' -delete
+	if ! meson test -C "$builddir" --print-errorlogs --num-processes "$jobs" --no-rebuild; then
+		failed_steps+=("$name tests")
+	fi
+	if [[ -f "$log" ]]; then
+		junits+=("$log")
+	else
+		failed_steps+=("$name: no junit log")
+	fi
+}
+
+run_suite release build -Dbuildtype=release -Dtests=true
+
+export ASAN_OPTIONS=detect_leaks=1
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+run_suite sanitizers build-asan -Dbuildtype=debugoptimized -Db_sanitize=address,undefined \
+	-Db_lundef=false -Dtests=true
+
+read -r passed failed skipped < <(bash scripts/count-junit.sh "${junits[@]}")
+
+# A test executable can fail without a failing case (a leak report at exit, a crash
+# before gtest wrote its XML): meson then fails the step, and it counts as one failure.
+if ((${#failed_steps[@]} > 0)); then
+	echo
+	echo "failed steps: ${failed_steps[*]}"
+	if ((failed < ${#failed_steps[@]})); then
+		failed=${#failed_steps[@]}
+	fi
+fi
+
+echo
+echo "test time: $((SECONDS - start)) s (${#junits[@]} junit logs)"
+rc=0
+if ((failed > 0 || ${#failed_steps[@]} > 0)); then
+	rc=1
+elif ((passed == 0)); then
+	echo "no test ran"
+	rc=1
+fi
+if ((skipped > 0)); then
+	echo "$passed passed, $failed failed, $skipped skipped"
+else
+	echo "$passed passed, $failed failed"
+fi
+exit $rc
