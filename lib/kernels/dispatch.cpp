@@ -24,7 +24,7 @@ const KernelTable &referenceKernels()
 	return table;
 }
 
-const KernelTable &bestKernels()
+const KernelTable &portableKernels()
 {
 	static const KernelTable table = {
 		"opt",
@@ -41,6 +41,54 @@ const KernelTable &bestKernels()
 		scanTrees_ref,
 	};
 	return table;
+}
+
+#if CALPED_HAVE_AVX2
+namespace {
+
+const KernelTable &avx2Kernels()
+{
+	static const KernelTable table = [] {
+		KernelTable t = portableKernels();
+		t.name = "avx2";
+		t.gradMagOrient = gradMagOrient_avx2;
+		return t;
+	}();
+	return table;
+}
+
+bool cpuHasAvx2()
+{
+	__builtin_cpu_init();
+	return __builtin_cpu_supports("avx2");
+}
+
+} // namespace
+#endif
+
+const KernelTable &bestKernels()
+{
+#if CALPED_HAVE_AVX2
+	if (cpuHasAvx2())
+		return avx2Kernels();
+#endif
+	return portableKernels();
+}
+
+int availableKernelTables(const KernelTable *out[], int capacity)
+{
+	int n = 0;
+	auto add = [&](const KernelTable &t) {
+		if (n < capacity)
+			out[n++] = &t;
+	};
+	add(referenceKernels());
+	add(portableKernels());
+#if CALPED_HAVE_AVX2
+	if (cpuHasAvx2())
+		add(avx2Kernels());
+#endif
+	return n;
 }
 
 } // namespace kernels

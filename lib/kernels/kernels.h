@@ -111,6 +111,9 @@ void gradMagOrient_ref(const GradientTables &t, const uint16_t *const planes[3],
 		       ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
 		       ptrdiff_t outStride, int32_t *scratch);
 // scratch: 4 * width int32.
+void gradMagOrient_avx2(const GradientTables &t, const uint16_t *const planes[3],
+			ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
+			ptrdiff_t outStride, int32_t *scratch);
 void gradMagOrient_opt(const GradientTables &t, const uint16_t *const planes[3],
 		       ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
 		       ptrdiff_t outStride, int32_t *scratch);
@@ -200,8 +203,12 @@ struct KernelTable {
 
 // The plain scalar references (the specification).
 const KernelTable &referenceKernels();
+// The portable optimised kernels (plain C++, vectorised by the compiler).
+const KernelTable &portableKernels();
 // The fastest kernels this build and CPU support.
 const KernelTable &bestKernels();
+// Every table this build and CPU can run, references first (for tests and benchmarks).
+int availableKernelTables(const KernelTable *out[], int capacity);
 
 } // namespace kernels
 } // namespace calped

@@ -38,9 +38,10 @@ ErrorCode detectCode(Detector &det, const ImageView &v)
 	Detections d;
 	const Status st = det.detect(v, d);
 	EXPECT_EQ(d.count, 0);
-	if (!st.ok())
+	if (!st.ok()) {
 		EXPECT_NE(std::string(st.message()).find(errorCodeName(st.code())), std::string::npos)
 			<< "message names its error: " << st.message();
+	}
 	return st.code();
 }
 

@@ -27,8 +27,13 @@ std::vector<uint16_t> randomPlane(std::mt19937 &rng, size_t n, int maxValue)
 	return v;
 }
 
-// The tables under test: every one the build provides besides the reference.
-std::vector<const KernelTable *> tablesUnderTest() { return { &bestKernels() }; }
+// The tables under test: every one the build and CPU provide besides the reference.
+std::vector<const KernelTable *> tablesUnderTest()
+{
+	const KernelTable *all[8];
+	const int n = availableKernelTables(all, 8);
+	return std::vector<const KernelTable *>(all + 1, all + n);
+}
 
 } // namespace
 

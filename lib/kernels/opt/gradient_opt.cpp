@@ -2,10 +2,7 @@
 // Gradient magnitude and orientation restructured for speed: derivatives and the
 // channel maximum are computed a row at a time in branch-free loops the compiler
 // vectorises; the table lookups stay scalar. Bit-identical to ref/gradient_ref.cpp.
-#include "kernels.h"
-#include "fixed_point.h"
-
-#include <algorithm>
+#include "opt/gradient_rows.h"
 
 namespace calped {
 namespace kernels {
@@ -34,57 +31,39 @@ void rowDerivatives(const uint16_t *above, const uint16_t *row, const uint16_t *
 
 } // namespace
 
+void strongestGradientRow(const uint16_t *const planes[3], ptrdiff_t stride, int width,
+			  int height, int y, int32_t *bx, int32_t *by, int32_t *cx, int32_t *cy)
+{
+	const int up = y > 0 ? y - 1 : y, down = y < height - 1 ? y + 1 : y;
+	const int vScale = height < 2 ? 0 : (y == 0 || y == height - 1 ? 2 : 1);
+	for (int c = 0; c < 3; c++) {
+		const uint16_t *p = planes[c];
+		int32_t *gx = c == 0 ? bx : cx, *gy = c == 0 ? by : cy;
+		rowDerivatives(p + up * stride, p + y * stride, p + down * stride, vScale, width, gx, gy);
+		if (c == 0)
+			continue;
+		// Keep the channel with the larger squared magnitude (the earlier on ties).
+		for (int x = 0; x < width; x++) {
+			const uint32_t best = uint32_t(bx[x] * bx[x]) + uint32_t(by[x] * by[x]);
+			const uint32_t cur = uint32_t(cx[x] * cx[x]) + uint32_t(cy[x] * cy[x]);
+			const bool take = cur > best;
+			bx[x] = take ? cx[x] : bx[x];
+			by[x] = take ? cy[x] : by[x];
+		}
+	}
+}
+
 void gradMagOrient_opt(const GradientTables &t, const uint16_t *const planes[3],
 		       ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
 		       ptrdiff_t outStride, int32_t *scratch)
 {
-	// scratch: gx, gy of the best channel, then gx, gy of the current one (4 * width).
 	int32_t *bx = scratch, *by = bx + width, *cx = by + width, *cy = cx + width;
-	const int noGradientOrient = t.fromCos[4096];
 	for (int y = 0; y < height; y++) {
-		const int up = y > 0 ? y - 1 : y, down = y < height - 1 ? y + 1 : y;
-		const int vScale = height < 2 ? 0 : (y == 0 || y == height - 1 ? 2 : 1);
-		for (int c = 0; c < 3; c++) {
-			const uint16_t *p = planes[c];
-			int32_t *gx = c == 0 ? bx : cx, *gy = c == 0 ? by : cy;
-			rowDerivatives(p + up * stride, p + y * stride, p + down * stride, vScale, width,
-				       gx, gy);
-			if (c == 0)
-				continue;
-			// Keep the channel with the larger squared magnitude (the earlier on ties).
-			for (int x = 0; x < width; x++) {
-				const uint32_t best = uint32_t(bx[x] * bx[x]) + uint32_t(by[x] * by[x]);
-				const uint32_t cur = uint32_t(cx[x] * cx[x]) + uint32_t(cy[x] * cy[x]);
-				const bool take = cur > best;
-				bx[x] = take ? cx[x] : bx[x];
-				by[x] = take ? cy[x] : by[x];
-			}
-		}
+		strongestGradientRow(planes, stride, width, height, y, bx, by, cx, cy);
 		uint16_t *mo = mag + y * outStride;
 		uint16_t *oo = orient + y * outStride;
-		for (int x = 0; x < width; x++) {
-			const int32_t gx = bx[x], gy = by[x];
-			const uint32_t m2v = uint32_t(gx * gx) + uint32_t(gy * gy);
-			if (m2v == 0) {
-				mo[x] = 0;
-				oo[x] = static_cast<uint16_t>(noGradientOrient);
-				continue;
-			}
-			int m, k;
-			normalizeEven(m2v, m, k);
-			mo[x] = saturateU16(shiftRound(int64_t(t.sqrtQ8[m]) << (k / 2), 9));
-			const int64_t rs = t.rsqrtQ20[m];
-			const int32_t gxf = gy < 0 ? -gx : gx;
-			const int shift = 8 + k / 2;
-			int64_t c12 = shiftRound(gxf * rs, shift);
-			c12 = c12 < -4096 ? -4096 : (c12 > 4096 ? 4096 : c12);
-			int64_t s12 = shiftRound((gy < 0 ? -gy : gy) * rs, shift);
-			s12 = s12 > 4096 ? 4096 : s12;
-			if (c12 >= -2896 && c12 <= 2896)
-				oo[x] = t.fromCos[c12 + 4096];
-			else
-				oo[x] = c12 > 0 ? t.fromSinAcute[s12] : t.fromSinObtuse[s12];
-		}
+		for (int x = 0; x < width; x++)
+			gradientPixel(t, bx[x], by[x], mo + x, oo + x);
 	}
 }
 
