@@ -52,6 +52,9 @@ const KernelTable &avx2Kernels()
 		KernelTable t = portableKernels();
 		t.name = "avx2";
 		t.gradMagOrient = gradMagOrient_avx2;
+		t.smoothTri1 = smoothTri1_avx2;
+		t.triSum = triSumR_avx2;
+		t.resamplePlane = resamplePlane_avx2;
 		return t;
 	}();
 	return table;

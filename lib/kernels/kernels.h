@@ -183,6 +183,16 @@ uint64_t scanTrees_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int 
 		       const TreeNode *nodes, int nTrees, int nodesPerTree, int32_t cascThr,
 		       WindowHit *hits, uint64_t capacity);
 
+// AVX2 builds of the portable optimised kernels (x86/portable_avx2.cpp).
+void smoothTri1_avx2(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
+		     ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp);
+void triSumR_avx2(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
+		  int width, int height, int r, uint32_t *scratch);
+void resamplePlane_avx2(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride);
+
 // ---- dispatch ----------------------------------------------------------------------------
 // The kernels one pipeline uses, chosen once at setup. Every entry of every table
 // produces output bit-identical to the reference table's.

@@ -1,87 +1,17 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Plane resampling restructured for speed: 32-bit accumulators (weights are non-negative
-// and sum to at most gain * 2^14, so sums stay below 2^32) and the column pass done a
-// whole row at a time. Bit-identical to ref/resample_ref.cpp.
-#include "kernels.h"
-
-#include <algorithm>
+// Plane resampling, portable optimised build (see resample_body.h).
+#include "opt/resample_body.h"
 
 namespace calped {
 namespace kernels {
-
-namespace {
-
-inline uint16_t roundQ14(uint32_t acc)
-{
-	const uint32_t v = (acc + (1u << (kQ - 1))) >> kQ;
-	return static_cast<uint16_t>(v > 65535 ? 65535 : v);
-}
-
-} // namespace
 
 void resamplePlane_opt(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
 		       uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 		       const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 		       ptrdiff_t tmpStride)
 {
-	// Along rows. Outputs of at most three taps (enlarging, and shrinking by up to 2x,
-	// which is every use in the pyramid) take a fixed three-tap form: a missing tap
-	// reads the first sample again with weight 0, so no read leaves the row.
-	bool threeTaps = true;
-	for (int x = 0; x < dstWidth && threeTaps; x++)
-		threeTaps = xTaps[x].count <= 3;
-	for (int y = 0; y < srcHeight; y++) {
-		const uint16_t *in = src + y * srcStride;
-		uint16_t *out = tmp + y * tmpStride;
-		if (threeTaps) {
-			for (int x = 0; x < dstWidth; x++) {
-				const ResampleTap &t = xTaps[x];
-				const uint16_t *p = in + t.first;
-				const int n = t.count;
-				const uint32_t w1 = n > 1 ? uint32_t(t.weight[1]) : 0;
-				const uint32_t w2 = n > 2 ? uint32_t(t.weight[2]) : 0;
-				const uint16_t v1 = p[n > 1 ? 1 : 0], v2 = p[n > 2 ? 2 : 0];
-				out[x] = roundQ14(uint32_t(t.weight[0]) * p[0] + w1 * v1 + w2 * v2);
-			}
-			continue;
-		}
-		for (int x = 0; x < dstWidth; x++) {
-			const ResampleTap &t = xTaps[x];
-			const uint16_t *p = in + t.first;
-			uint32_t acc = 0;
-			for (int j = 0; j < t.count; j++)
-				acc += uint32_t(t.weight[j]) * p[j];
-			out[x] = roundQ14(acc);
-		}
-	}
-	(void)srcWidth;
-	for (int y = 0; y < dstHeight; y++) {
-		const ResampleTap &t = yTaps[y];
-		uint16_t *out = dst + y * dstStride;
-		const uint16_t *r0 = tmp + t.first * tmpStride;
-		const uint32_t w0 = uint32_t(t.weight[0]);
-		if (t.count == 1) {
-			for (int x = 0; x < dstWidth; x++)
-				out[x] = roundQ14(w0 * r0[x]);
-		} else if (t.count == 2) {
-			const uint16_t *r1 = r0 + tmpStride;
-			const uint32_t w1 = uint32_t(t.weight[1]);
-			for (int x = 0; x < dstWidth; x++)
-				out[x] = roundQ14(w0 * r0[x] + w1 * r1[x]);
-		} else if (t.count == 3) {
-			const uint16_t *r1 = r0 + tmpStride, *r2 = r1 + tmpStride;
-			const uint32_t w1 = uint32_t(t.weight[1]), w2 = uint32_t(t.weight[2]);
-			for (int x = 0; x < dstWidth; x++)
-				out[x] = roundQ14(w0 * r0[x] + w1 * r1[x] + w2 * r2[x]);
-		} else {
-			for (int x = 0; x < dstWidth; x++) {
-				uint32_t acc = 0;
-				for (int j = 0; j < t.count; j++)
-					acc += uint32_t(t.weight[j]) * r0[j * tmpStride + x];
-				out[x] = roundQ14(acc);
-			}
-		}
-	}
+	resamplePlaneBody(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth, dstHeight,
+			  xTaps, yTaps, tmp, tmpStride);
 }
 
 } // namespace kernels

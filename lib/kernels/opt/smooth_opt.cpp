@@ -1,10 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Triangle smoothing, restructured for speed: whole rows at a time with the borders
-// handled outside the inner loops, so the compiler vectorises them. Bit-identical to
-// ref/smooth_ref.cpp (tests/kernels compare them).
-#include "kernels.h"
-
-#include <algorithm>
+// Triangle smoothing, portable optimised build (see smooth_body.h).
+#include "opt/smooth_body.h"
 
 namespace calped {
 namespace kernels {
@@ -12,114 +8,13 @@ namespace kernels {
 void smoothTri1_opt(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
 		    ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp)
 {
-	for (int y = 0; y < height; y++) {
-		const uint16_t *a = src + std::max(y - 1, 0) * srcStride;
-		const uint16_t *b = src + y * srcStride;
-		const uint16_t *c = src + std::min(y + 1, height - 1) * srcStride;
-		for (int x = 0; x < width; x++)
-			rowTmp[x] = uint32_t(a[x]) + 2 * uint32_t(b[x]) + uint32_t(c[x]);
-		uint16_t *out = dst + y * dstStride;
-		if (width == 1) {
-			out[0] = static_cast<uint16_t>((4 * rowTmp[0] + 8) >> 4);
-			continue;
-		}
-		out[0] = static_cast<uint16_t>((3 * rowTmp[0] + rowTmp[1] + 8) >> 4);
-		for (int x = 1; x < width - 1; x++)
-			out[x] = static_cast<uint16_t>((rowTmp[x - 1] + 2 * rowTmp[x] + rowTmp[x + 1] + 8) >> 4);
-		out[width - 1] =
-			static_cast<uint16_t>((rowTmp[width - 2] + 3 * rowTmp[width - 1] + 8) >> 4);
-	}
+	smoothTri1Body(src, srcStride, dst, dstStride, width, height, rowTmp);
 }
-
-namespace {
-
-int reflect(int i, int n)
-{
-	while (i < 0 || i >= n) {
-		if (i < 0)
-			i = -i - 1;
-		if (i >= n)
-			i = 2 * n - i - 1;
-	}
-	return i;
-}
-
-// 1-D triangle sum of q[0 .. n + 2r) (already padded) into out[0 .. n): two running
-// box sums of r + 1 samples, whose composition is the triangle 1..r+1..1.
-void triangleRow(const uint32_t *q, int n, int r, uint32_t *box, uint32_t *out)
-{
-	uint32_t acc = 0;
-	for (int j = 0; j < r; j++)
-		acc += q[j];
-	for (int m = 0; m < n + r; m++) {
-		acc += q[m + r];
-		box[m] = acc;
-		acc -= q[m];
-	}
-	uint32_t acc2 = 0;
-	for (int j = 0; j < r; j++)
-		acc2 += box[j];
-	for (int y = 0; y < n; y++) {
-		acc2 += box[y + r];
-		out[y] = acc2;
-		acc2 -= box[y];
-	}
-}
-
-} // namespace
 
 void triSumR_opt(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
 		 int width, int height, int r, uint32_t *scratch)
 {
-	// scratch (triSumScratchSize): the horizontal result (width x height), then one padded
-	// row, one box row, the ring of r + 1 box rows and two accumulator rows.
-	uint32_t *horiz = scratch;
-	uint32_t *padded = horiz + size_t(width) * height;
-	uint32_t *boxRow = padded + width + 2 * r;
-	uint32_t *ring = boxRow + width + r;
-	uint32_t *acc1 = ring + size_t(r + 1) * width;
-	uint32_t *acc2 = acc1 + width;
-
-	for (int y = 0; y < height; y++) {
-		const uint16_t *row = src + y * srcStride;
-		for (int i = 0; i < r; i++) {
-			padded[i] = row[reflect(i - r, width)];
-			padded[width + r + i] = row[reflect(width + i, width)];
-		}
-		for (int x = 0; x < width; x++)
-			padded[r + x] = row[x];
-		triangleRow(padded, width, r, boxRow, horiz + size_t(y) * width);
-	}
-
-	// Vertical: the same two running sums, a column per lane, over whole rows.
-	auto q = [&](int m) { return horiz + size_t(reflect(m - r, height)) * width; };
-	for (int x = 0; x < width; x++)
-		acc1[x] = acc2[x] = 0;
-	for (int j = 0; j < r; j++) {
-		const uint32_t *qj = q(j);
-		for (int x = 0; x < width; x++)
-			acc1[x] += qj[x];
-	}
-	for (int m = 0; m < height + r; m++) {
-		const uint32_t *in = q(m + r);
-		const uint32_t *leaving = q(m);
-		uint32_t *box = ring + size_t(m % (r + 1)) * width;
-		for (int x = 0; x < width; x++) {
-			acc1[x] += in[x];
-			box[x] = acc1[x];
-			acc2[x] += acc1[x];
-			acc1[x] -= leaving[x];
-		}
-		if (m >= r) {
-			const int y = m - r;
-			uint32_t *out = dst + y * dstStride;
-			const uint32_t *oldest = ring + size_t(y % (r + 1)) * width;
-			for (int x = 0; x < width; x++) {
-				out[x] = acc2[x];
-				acc2[x] -= oldest[x];
-			}
-		}
-	}
+	triSumRBody(src, srcStride, dst, dstStride, width, height, r, scratch);
 }
 
 } // namespace kernels

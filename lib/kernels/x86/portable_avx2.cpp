@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The portable optimised kernels compiled with AVX2: the same source bodies as opt/
+// (bit-identical by construction and by test), vectorised by the compiler with 256-bit
+// integer operations (32-bit multiplies need SSE4.1 or better, which the baseline build
+// cannot assume).
+#include "opt/resample_body.h"
+#include "opt/smooth_body.h"
+
+namespace calped {
+namespace kernels {
+
+void smoothTri1_avx2(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
+		     ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp)
+{
+	smoothTri1Body(src, srcStride, dst, dstStride, width, height, rowTmp);
+}
+
+void triSumR_avx2(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
+		  int width, int height, int r, uint32_t *scratch)
+{
+	triSumRBody(src, srcStride, dst, dstStride, width, height, r, scratch);
+}
+
+void resamplePlane_avx2(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride)
+{
+	resamplePlaneBody(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth, dstHeight,
+			  xTaps, yTaps, tmp, tmpStride);
+}
+
+} // namespace kernels
+} // namespace calped
