@@ -29,7 +29,7 @@ const KernelTable &portableKernels()
 	static const KernelTable table = {
 		"opt",
 		rgbToLuv_ref,
-		resampleRgb8_ref,
+		resampleRgb8_opt,
 		resamplePlane_opt,
 		smoothTri1_opt,
 		gradMagOrient_opt,
@@ -55,6 +55,7 @@ const KernelTable &avx2Kernels()
 		t.smoothTri1 = smoothTri1_avx2;
 		t.triSum = triSumR_avx2;
 		t.resamplePlane = resamplePlane_avx2;
+		t.resampleRgb8 = resampleRgb8_avx2;
 		return t;
 	}();
 	return table;

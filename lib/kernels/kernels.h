@@ -67,6 +67,10 @@ void resampleRgb8_ref(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int
 		      uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 		      const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp);
 
+void resampleRgb8_opt(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+		      uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		      const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp);
+
 // One uint16 plane -> one plane of the same fixed-point format. yTaps' weights may include a gain (the power-law
 // ratio of approximated levels). tmp holds srcHeight rows of dstWidth uint16.
 void resamplePlane_ref(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
@@ -184,6 +188,9 @@ uint64_t scanTrees_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int 
 		       WindowHit *hits, uint64_t capacity);
 
 // AVX2 builds of the portable optimised kernels (x86/portable_avx2.cpp).
+void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+		       uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		       const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp);
 void smoothTri1_avx2(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
 		     ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp);
 void triSumR_avx2(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,

@@ -131,3 +131,26 @@ TEST(KernelEquality, GradientMagnitudeOrientation)
 				ASSERT_EQ(oa, ob) << k->name << " orientation " << s.w << "x" << s.h;
 			}
 }
+
+TEST(KernelEquality, ResampleRgb8)
+{
+	std::mt19937 rng(5);
+	const std::pair<int, int> sizes[] = { { 1, 2 }, { 3, 6 }, { 5, 10 }, { 8, 12 }, { 13, 33 },
+					      { 16, 40 }, { 7, 17 }, { 9, 9 }, { 20, 30 }, { 30, 20 } };
+	for (const KernelTable *k : tablesUnderTest())
+		for (auto [n, m] : sizes)
+			for (auto [nh, mh] : sizes) {
+				std::vector<ResampleTap> xt(m), yt(mh);
+				if (!buildResampleTaps(n, m, 1.0, xt.data()) || !buildResampleTaps(nh, mh, 1.0, yt.data()))
+					continue;
+				const int srcStride = 3 * n + 2, dstStride = 3 * m + 1;
+				std::vector<uint8_t> src(size_t(srcStride) * nh);
+				for (auto &v : src)
+					v = uint8_t(rng());
+				std::vector<uint8_t> a(size_t(dstStride) * mh, 5), b = a;
+				std::vector<int32_t> row(3 * n + 8);
+				resampleRgb8_ref(src.data(), srcStride, n, nh, a.data(), dstStride, m, mh, xt.data(), yt.data(), row.data());
+				k->resampleRgb8(src.data(), srcStride, n, nh, b.data(), dstStride, m, mh, xt.data(), yt.data(), row.data());
+				ASSERT_EQ(a, b) << k->name << " " << n << "x" << nh << " -> " << m << "x" << mh;
+			}
+}

@@ -4,6 +4,7 @@
 // integer operations (32-bit multiplies need SSE4.1 or better, which the baseline build
 // cannot assume).
 #include "opt/resample_body.h"
+#include "opt/resample_rgb8_body.h"
 #include "opt/smooth_body.h"
 
 namespace calped {
@@ -28,6 +29,14 @@ void resamplePlane_avx2(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, 
 {
 	resamplePlaneBody(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth, dstHeight,
 			  xTaps, yTaps, tmp, tmpStride);
+}
+
+void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+		       uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		       const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp)
+{
+	resampleRgb8Body(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth, dstHeight,
+			 xTaps, yTaps, rowTmp);
 }
 
 } // namespace kernels

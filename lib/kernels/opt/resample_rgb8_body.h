@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Body of the optimised RGB8 resampling (the input "resize"), shared by the portable and
+// SIMD builds. Bit-identical to ref/resample_ref.cpp. When every weight is a multiple of
+// a power of two (2x enlarging: quarters of 2^14), the weights are divided by it and the
+// sums fit 32 bits, so the column pass vectorises; otherwise sums are 64-bit.
+#pragma once
+
+#include <algorithm>
+
+#include "kernels.h"
+
+namespace calped {
+namespace kernels {
+namespace {
+
+// Largest s such that every weight of every tap is a multiple of 2^s (at most 14).
+inline int commonWeightShift(const ResampleTap *taps, int n)
+{
+	int s = 14;
+	for (int i = 0; i < n; i++)
+		for (int j = 0; j < taps[i].count; j++)
+			s = std::min(s, taps[i].weight[j] ? __builtin_ctz(uint32_t(taps[i].weight[j])) : 14);
+	return s;
+}
+
+inline void resampleRgb8Body(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+			     uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+			     const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp)
+{
+	(void)srcHeight;
+	const int sy = commonWeightShift(yTaps, dstHeight);
+	// Keep at least one bit to shift out, so halves can round down.
+	const int sx = std::min(commonWeightShift(xTaps, dstWidth), 27 - sy);
+	// With weights divided by 2^(sx+sy), the sums are below 255 * 2^(28 - sx - sy).
+	const bool small = 28 - sx - sy <= 22;
+	const int shift = small ? 28 - sx - sy : 28;
+	const int64_t bias = (int64_t(1) << (shift - 1)) - 1; // halves round down
+	const int srcW3 = 3 * srcWidth;
+	for (int y = 0; y < dstHeight; y++) {
+		const ResampleTap &ty = yTaps[y];
+		const int ySh = small ? sy : 0;
+		const uint8_t *r0 = src + ty.first * srcStride;
+		const int32_t w0 = ty.weight[0] >> ySh;
+		if (ty.count == 1) {
+			for (int i = 0; i < srcW3; i++)
+				rowTmp[i] = w0 * r0[i];
+		} else {
+			const uint8_t *r1 = r0 + srcStride;
+			const int32_t w1 = ty.weight[1] >> ySh;
+			for (int i = 0; i < srcW3; i++)
+				rowTmp[i] = w0 * r0[i] + w1 * r1[i];
+			for (int j = 2; j < ty.count; j++) {
+				const uint8_t *rj = r0 + j * srcStride;
+				const int32_t wj = ty.weight[j] >> ySh;
+				for (int i = 0; i < srcW3; i++)
+					rowTmp[i] += wj * rj[i];
+			}
+		}
+		uint8_t *out = dst + y * dstStride;
+		const int xSh = small ? sx : 0;
+		for (int x = 0; x < dstWidth; x++) {
+			const ResampleTap &tx = xTaps[x];
+			const int32_t *p = rowTmp + 3 * tx.first;
+			int64_t a0 = 0, a1 = 0, a2 = 0;
+			for (int j = 0; j < tx.count; j++) {
+				const int64_t w = tx.weight[j] >> xSh;
+				a0 += w * p[3 * j];
+				a1 += w * p[3 * j + 1];
+				a2 += w * p[3 * j + 2];
+			}
+			out[3 * x] = static_cast<uint8_t>(std::clamp<int64_t>((a0 + bias) >> shift, 0, 255));
+			out[3 * x + 1] = static_cast<uint8_t>(std::clamp<int64_t>((a1 + bias) >> shift, 0, 255));
+			out[3 * x + 2] = static_cast<uint8_t>(std::clamp<int64_t>((a2 + bias) >> shift, 0, 255));
+		}
+	}
+}
+
+} // namespace
+} // namespace kernels
+} // namespace calped
