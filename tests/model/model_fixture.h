@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Small hand-made models for the model tests.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <calped/model.h>
+
+namespace calped {
+namespace test {
+
+// A valid model: `trees` complete depth-2 trees (7 nodes) with INRIA-like params and
+// deterministic, varied node values.
+Model makeSmallModel(int32_t trees = 3);
+
+// A valid model whose every parameter differs from ModelParams' defaults, so a field that is
+// dropped or swapped on the way through the blob cannot go unnoticed.
+Model makeUnusualModel();
+
+// Rewrites the header's payload size and both CRCs after a test edited a blob.
+void refreshChecksums(std::vector<uint8_t> &blob);
+
+} // namespace test
+} // namespace calped

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// calped-convert: Dollár toolbox detector (.mat) -> calped model blob (.cpm).
+// Usage and exit codes are in docs/model-format.md.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <new>
+#include <system_error>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+
+#include <calped/model.h>
+#include <calped/status.h>
+
+#include "array_dump.h"
+#include "detector_clf.h"
+#include "detector_opts.h"
+#include "mat_reader.h"
+
+namespace calped {
+namespace convert {
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+
+const char kUsage[] =
+	"usage: calped-convert [--dump-arrays DIR] [--name NAME] IN.mat OUT.cpm\n"
+	"  Converts a detector trained with Piotr Dollar's toolbox (ACF, Matlab v5 .mat)\n"
+	"  into a calped model blob.\n"
+	"  --dump-arrays DIR  also write the raw clf arrays to DIR/{fids,thrs,child,hs,weights,depth}.txt\n"
+	"  --name NAME        model name stored in the blob (default: IN's file name without .mat)\n";
+
+struct Options {
+	std::string input, output, dumpDir, name;
+	bool haveName = false;
+};
+
+// Returns -1 when the arguments are fine, else the exit code.
+int parseArgs(int argc, char **argv, Options &o)
+{
+	std::vector<std::string> positional;
+	for (int i = 1; i < argc; i++) {
+		const std::string arg = argv[i];
+		if (arg == "-h" || arg == "--help") {
+			std::fputs(kUsage, stdout);
+			return 0;
+		}
+		if (arg == "--dump-arrays" || arg == "--name") {
+			if (i + 1 >= argc) {
+				std::fprintf(stderr, "calped-convert: %s needs a value\n%s", arg.c_str(), kUsage);
+				return kExitUsage;
+			}
+			if (arg == "--name") {
+				o.name = argv[++i];
+				o.haveName = true;
+			} else {
+				o.dumpDir = argv[++i];
+			}
+		} else if (arg.size() > 1 && arg[0] == '-') {
+			std::fprintf(stderr, "calped-convert: unknown option %s\n%s", arg.c_str(), kUsage);
+			return kExitUsage;
+		} else {
+			positional.push_back(arg);
+		}
+	}
+	if (positional.size() != 2) {
+		std::fputs(kUsage, stderr);
+		return kExitUsage;
+	}
+	o.input = positional[0];
+	o.output = positional[1];
+	if (!o.haveName) {
+		std::filesystem::path p(o.input);
+		o.name = p.extension() == ".mat" ? p.stem().string() : p.filename().string();
+	}
+	return -1;
+}
+
+// libmatio trusts the dimensions written in the file, so one damaged byte can make it try to
+// allocate tens of gigabytes. A real detector needs well under 100 MB (the 2.5 MB Caltech
+// model peaks at 40 MB), so cap the address space and let those allocations fail instead.
+void capAddressSpace(const std::string &input)
+{
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+	(void)input; // sanitizers reserve terabytes of virtual address space
+#else
+	std::error_code ec;
+	const uintmax_t size = std::filesystem::file_size(input, ec);
+	if (ec)
+		return; // opening it will fail with a proper message
+	const rlim_t cap = (static_cast<rlim_t>(512) << 20) + 64 * static_cast<rlim_t>(size);
+	struct rlimit limit;
+	if (getrlimit(RLIMIT_AS, &limit) != 0)
+		return;
+	if (limit.rlim_cur == RLIM_INFINITY || limit.rlim_cur > cap) {
+		limit.rlim_cur = cap;
+		setrlimit(RLIMIT_AS, &limit);
+	}
+#endif
+}
+
+Status writeFile(const std::string &path, const std::vector<uint8_t> &bytes)
+{
+	std::FILE *f = std::fopen(path.c_str(), "wb");
+	if (!f)
+		return Status::error(ErrorCode::IoError, "cannot create %s: %s", path.c_str(),
+				     std::strerror(errno));
+	const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+	if (std::fclose(f) != 0 || !written) {
+		std::remove(path.c_str()); // never leave a partial model behind
+		return Status::error(ErrorCode::IoError, "cannot write %s", path.c_str());
+	}
+	return Status::success();
+}
+
+Status convert(const Options &o, Model &model, size_t &blobSize)
+{
+	MatFile file;
+	MatNode detector, opts, clf;
+	Status s = file.open(o.input);
+	if (s.ok())
+		s = file.read("detector", detector);
+	if (s.ok())
+		s = field(detector, "opts", opts);
+	if (s.ok())
+		s = readDetectorOpts(opts, model.params);
+	if (s.ok())
+		s = field(detector, "clf", clf);
+	RawClf raw;
+	if (s.ok())
+		s = readClf(clf, raw);
+	if (s.ok() && !o.dumpDir.empty())
+		s = dumpArrays(raw, o.dumpDir);
+	if (s.ok())
+		s = convertClf(raw, model);
+	if (!s.ok())
+		return s;
+	model.name = o.name;
+	s = validateModel(model);
+	if (!s.ok())
+		return s;
+	const std::vector<uint8_t> blob = serializeModel(model);
+	if (blob.empty())
+		return Status::error(ErrorCode::OutOfMemory, "serialising the model");
+	blobSize = blob.size();
+	return writeFile(o.output, blob);
+}
+
+int run(int argc, char **argv)
+{
+	Options o;
+	const int parsed = parseArgs(argc, argv, o);
+	if (parsed >= 0)
+		return parsed;
+	capAddressSpace(o.input);
+	Model model;
+	size_t blobSize = 0;
+	const Status s = convert(o, model, blobSize);
+	if (!s.ok()) {
+		std::fprintf(stderr, "calped-convert: %s\n", s.message());
+		return kExitFailure;
+	}
+	const ModelParams &p = model.params;
+	std::printf("%s: %d trees x %d nodes, depth %d, window %gx%g in %dx%d, shrink %d, "
+		    "stride %d -> %s (%zu bytes)\n",
+		    model.name.c_str(), model.nTrees, model.nodesPerTree, model.treeDepth,
+		    static_cast<double>(p.modelDsH), static_cast<double>(p.modelDsW), p.modelDsPadH,
+		    p.modelDsPadW, p.shrink, p.stride, o.output.c_str(), blobSize);
+	return 0;
+}
+
+} // namespace
+
+} // namespace convert
+} // namespace calped
+
+int main(int argc, char **argv)
+{
+	try {
+		return calped::convert::run(argc, argv);
+	} catch (const std::bad_alloc &) {
+		std::fprintf(stderr, "calped-convert: OutOfMemory: the input needs more memory than allowed\n");
+	} catch (const std::exception &e) {
+		std::fprintf(stderr, "calped-convert: unexpected failure: %s\n", e.what());
+	} catch (...) {
+		std::fprintf(stderr, "calped-convert: unexpected failure\n");
+	}
+	return 1;
+}
