@@ -51,6 +51,7 @@ const KernelTable &avx2Kernels()
 	static const KernelTable table = [] {
 		KernelTable t = portableKernels();
 		t.name = "avx2";
+		t.rgbToLuv = rgbToLuv_avx2;
 		t.gradMagOrient = gradMagOrient_avx2;
 		t.smoothTri1 = smoothTri1_avx2;
 		t.triSum = triSumR_avx2;

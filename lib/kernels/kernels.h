@@ -23,12 +23,10 @@ constexpr int kOrientQ = 10;
 
 // ---- colour: RGB8 -> LUV (Q16), the toolbox's rgbConvert(I, 'luv') -------------------
 struct LuvTables {
-	// x, y, z of each 8-bit component in Q28 (x = xr[r] + xg[g] + xb[b]). The L table
-	// is indexed by floor(y * 1024), so y needs to be exact well beyond 2^-10: a pixel
-	// whose index flips moves L by a whole table step.
-	int32_t xr[256], xg[256], xb[256];
-	int32_t yr[256], yg[256], yb[256];
-	int32_t zr[256], zg[256], zb[256];
+	// x, y, z = c[0] * r + c[1] * g + c[2] * b in Q28 (the toolbox's matrix / 255). The L
+	// table is indexed by floor(y * 1024), so y needs to be exact well beyond 2^-10: a
+	// pixel whose index flips moves L by a whole table step.
+	int32_t cx[3], cy[3], cz[3];
 	// L/270 in Q16 indexed by floor(y * 1024) (the toolbox's 1025-entry cube-root table).
 	uint16_t l[1025 + 39];
 	// 2^27 / (m + 0.5) for normalised mantissas m in [2048, 4096).
@@ -43,6 +41,8 @@ using RgbToLuvFn = void (*)(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rg
 			    ptrdiff_t stride);
 void rgbToLuv_ref(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride, int width,
 		  int height, uint16_t *l, uint16_t *u, uint16_t *v, ptrdiff_t stride);
+void rgbToLuv_avx2(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride, int width,
+		   int height, uint16_t *l, uint16_t *u, uint16_t *v, ptrdiff_t stride);
 
 // ---- resampling (the toolbox's imResampleMex) ------------------------------------------
 // Separable linear resampling: output index o takes taps[o].count source samples

@@ -20,18 +20,12 @@ void buildLuvTables(LuvTables &t)
 	const double mr[3] = { 0.430574, 0.222015, 0.020183 };
 	const double mg[3] = { 0.341550, 0.706655, 0.129553 };
 	const double mb[3] = { 0.178325, 0.071330, 0.939180 };
-	const double q28 = 1 << 28;
-	for (int i = 0; i < 256; i++) {
-		const double v = i / 255.0 * q28;
-		t.xr[i] = roundToInt(mr[0] * v);
-		t.yr[i] = roundToInt(mr[1] * v);
-		t.zr[i] = roundToInt(mr[2] * v);
-		t.xg[i] = roundToInt(mg[0] * v);
-		t.yg[i] = roundToInt(mg[1] * v);
-		t.zg[i] = roundToInt(mg[2] * v);
-		t.xb[i] = roundToInt(mb[0] * v);
-		t.yb[i] = roundToInt(mb[1] * v);
-		t.zb[i] = roundToInt(mb[2] * v);
+	const double q28 = (1 << 28) / 255.0;
+	int32_t *rows[3] = { t.cx, t.cy, t.cz };
+	for (int j = 0; j < 3; j++) {
+		rows[j][0] = roundToInt(mr[j] * q28);
+		rows[j][1] = roundToInt(mg[j] * q28);
+		rows[j][2] = roundToInt(mb[j] * q28);
 	}
 
 	// L / 270 for y = i / 1024, CIE lightness with the linear toe below (6/29)^3.

@@ -154,3 +154,39 @@ TEST(KernelEquality, ResampleRgb8)
 				ASSERT_EQ(a, b) << k->name << " " << n << "x" << nh << " -> " << m << "x" << mh;
 			}
 }
+
+TEST(KernelEquality, RgbToLuv)
+{
+	std::mt19937 rng(6);
+	LuvTables t;
+	buildLuvTables(t);
+	for (const KernelTable *k : tablesUnderTest())
+		for (Size s : kSizes)
+			for (int offset : { 0, 1 }) {
+				const int rgbStride = 3 * s.w + 5, stride = s.w + 3;
+				std::vector<uint8_t> rgb(size_t(rgbStride) * s.h + offset);
+				for (auto &v : rgb)
+					v = uint8_t(rng() % 4 == 0 ? (rng() % 2) * 255 : rng()); // extremes too
+				std::vector<uint16_t> a(size_t(3) * stride * s.h + 1, 3), b = a;
+				const size_t plane = size_t(stride) * s.h;
+				rgbToLuv_ref(t, rgb.data() + offset, rgbStride, s.w, s.h, a.data(), a.data() + plane,
+					     a.data() + 2 * plane, stride);
+				k->rgbToLuv(t, rgb.data() + offset, rgbStride, s.w, s.h, b.data(), b.data() + plane,
+					    b.data() + 2 * plane, stride);
+				ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h;
+			}
+	// Every grey level and every pure colour ramp, where the ratios are extreme.
+	for (const KernelTable *k : tablesUnderTest()) {
+		std::vector<uint8_t> rgb(256 * 4 * 3);
+		for (int i = 0; i < 256; i++)
+			for (int c = 0; c < 3; c++) {
+				rgb[3 * i + c] = uint8_t(i);
+				for (int ramp = 0; ramp < 3; ramp++)
+					rgb[3 * (256 * (ramp + 1) + i) + c] = c == ramp ? uint8_t(i) : 0;
+			}
+		std::vector<uint16_t> a(3 * 1024), b(3 * 1024);
+		rgbToLuv_ref(t, rgb.data(), 0, 1024, 1, a.data(), a.data() + 1024, a.data() + 2048, 1024);
+		k->rgbToLuv(t, rgb.data(), 0, 1024, 1, b.data(), b.data() + 1024, b.data() + 2048, 1024);
+		ASSERT_EQ(a, b) << k->name << " ramps";
+	}
+}

@@ -15,18 +15,19 @@ void rgbToLuv_ref(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride, i
 		const uint8_t *p = rgb + y * rgbStride;
 		uint16_t *lo = l + y * stride, *uo = u + y * stride, *vo = v + y * stride;
 		for (int x = 0; x < width; x++, p += 3) {
-			const int32_t X = t.xr[p[0]] + t.xg[p[1]] + t.xb[p[2]]; // Q28
-			const int32_t Y = t.yr[p[0]] + t.yg[p[1]] + t.yb[p[2]];
-			const int32_t Z = t.zr[p[0]] + t.zg[p[1]] + t.zb[p[2]];
+			const int32_t X = t.cx[0] * p[0] + t.cx[1] * p[1] + t.cx[2] * p[2]; // Q28
+			const int32_t Y = t.cy[0] * p[0] + t.cy[1] * p[1] + t.cy[2] * p[2];
+			const int32_t Z = t.cz[0] * p[0] + t.cz[1] * p[1] + t.cz[2] * p[2];
 			const int32_t L = t.l[Y >> 18]; // Q16
-			const int64_t d = int64_t(X) + 15 * int64_t(Y) + 3 * int64_t(Z);
+			// d / 4 = x + 15 y + 3 z in Q26, so that it fits 31 bits.
+			const int32_t d = (X >> 2) + 15 * (Y >> 2) + 3 * (Z >> 2);
 			int64_t xd = 0, yd = 0; // x / d and y / d in Q16
 			if (d > 0) {
 				int m, k;
 				normalize12(static_cast<uint64_t>(d), m, k);
 				const int64_t r = t.rcp[m - 2048]; // 2^27 / m
-				xd = shiftRound(int64_t(X) * r, 11 + k);
-				yd = shiftRound(int64_t(Y) * r, 11 + k);
+				xd = shiftRound(int64_t(X) * r, 13 + k);
+				yd = shiftRound(int64_t(Y) * r, 13 + k);
 			}
 			const int64_t uu = shiftRound(L * (52 * xd - t.un13), kLuvQ) - t.minu;
 			const int64_t vv = shiftRound(L * (117 * yd - t.vn13), kLuvQ) - t.minv;

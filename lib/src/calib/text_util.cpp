@@ -109,4 +109,15 @@ Status numberError(NumberResult r, const char *name, int line, const char *field
 	return fileError(ErrorCode::ParseError, name, line, "%s '%s' is not a number", field, q);
 }
 
+Status withFileName(const Status &st, const char *name)
+{
+	if (st.ok())
+		return st;
+	const char *text = st.message();
+	const size_t skip = std::strlen(errorCodeName(st.code())) + 2; // "Code: "
+	if (std::strlen(text) >= skip)
+		text += skip;
+	return Status::error(st.code(), "%s: %s", name, text);
+}
+
 } // namespace calped::calib

@@ -49,4 +49,7 @@ Status fileError(ErrorCode code, const char *name, int line, const char *fmt, ..
 Status numberError(NumberResult r, const char *name, int line, const char *field,
 		   std::string_view token);
 
+// `st` with "name: " put in front of its text (for errors from CameraModel's factories).
+Status withFileName(const Status &st, const char *name);
+
 } // namespace calped::calib

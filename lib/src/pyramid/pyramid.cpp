@@ -37,6 +37,12 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		return Status::error(ErrorCode::ModelUnsupported,
 				     "calped implements shrink 4, 6 orientations in [0, pi), gradients "
 				     "over all colour channels and smoothing radius <= 1");
+	// Histograms interpolate between orientations (softBin 0) or not at all (-2); the
+	// toolbox's odd values also spread pixels over neighbouring cells.
+	if (params.softBin != 0 && params.softBin != -2)
+		return Status::error(ErrorCode::ModelUnsupported,
+				     "softBin %d: calped implements 0 and -2 (no spatial interpolation)",
+				     int(params.softBin));
 	params_ = params;
 	padH_ = params.padH / params.shrink;
 	padW_ = params.padW / params.shrink;

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// RGB8 -> LUV (Q16) with AVX2, eight pixels at a time. Bit-identical to
+// ref/luv_ref.cpp: the reference's 64-bit products are done with 32x32->64-bit
+// multiplies on even and odd lanes; table reads are gathers.
+#include <immintrin.h>
+
+#include <initializer_list>
+
+#include "kernels.h"
+#include "fixed_point.h"
+
+namespace calped {
+namespace kernels {
+
+namespace {
+
+inline __m256i bitLength8(__m256i v)
+{
+	const __m256i zero = _mm256_setzero_si256(), ones = _mm256_set1_epi32(-1);
+	__m256i bits = zero;
+	for (int s : { 16, 8, 4, 2, 1 }) {
+		const __m256i shifted = _mm256_srli_epi32(v, s);
+		const __m256i nonzero = _mm256_xor_si256(_mm256_cmpeq_epi32(shifted, zero), ones);
+		bits = _mm256_add_epi32(bits, _mm256_and_si256(nonzero, _mm256_set1_epi32(s)));
+		v = _mm256_blendv_epi8(v, shifted, nonzero);
+	}
+	return _mm256_sub_epi32(bits, _mm256_xor_si256(_mm256_cmpeq_epi32(v, zero), ones));
+}
+
+// (a * b + 2^(s-1)) >> s per lane for non-negative a, b with a 64-bit product and a
+// result that fits 32 bits; s per lane in [1, 63].
+inline __m256i mulShiftRoundU(__m256i a, __m256i b, __m256i s)
+{
+	const __m256i one = _mm256_set1_epi64x(1);
+	const __m256i sEven = _mm256_and_si256(s, _mm256_set1_epi64x(0xFFFFFFFF));
+	const __m256i sOdd = _mm256_srli_epi64(s, 32);
+	const __m256i pe = _mm256_mul_epu32(a, b);
+	const __m256i po = _mm256_mul_epu32(_mm256_srli_epi64(a, 32), _mm256_srli_epi64(b, 32));
+	const __m256i re = _mm256_srlv_epi64(
+		_mm256_add_epi64(pe, _mm256_sllv_epi64(one, _mm256_sub_epi64(sEven, one))), sEven);
+	const __m256i ro = _mm256_srlv_epi64(
+		_mm256_add_epi64(po, _mm256_sllv_epi64(one, _mm256_sub_epi64(sOdd, one))), sOdd);
+	return _mm256_blend_epi32(re, _mm256_slli_epi64(ro, 32), 0xAA);
+}
+
+// (a * b + 2^15) >> 16 per lane for signed a, b whose result fits 32 bits: the low 32
+// bits of a logical 64-bit shift are the right ones even for negative products.
+inline __m256i mulShiftRound16S(__m256i a, __m256i b)
+{
+	const __m256i half = _mm256_set1_epi64x(1 << 15);
+	const __m256i pe = _mm256_add_epi64(_mm256_mul_epi32(a, b), half);
+	const __m256i po = _mm256_add_epi64(
+		_mm256_mul_epi32(_mm256_srli_epi64(a, 32), _mm256_srli_epi64(b, 32)), half);
+	return _mm256_blend_epi32(_mm256_srli_epi64(pe, 16), _mm256_slli_epi64(_mm256_srli_epi64(po, 16), 32), 0xAA);
+}
+
+inline __m256i dot3(const int32_t c[3], __m256i r, __m256i g, __m256i b)
+{
+	return _mm256_add_epi32(_mm256_add_epi32(_mm256_mullo_epi32(r, _mm256_set1_epi32(c[0])),
+						 _mm256_mullo_epi32(g, _mm256_set1_epi32(c[1]))),
+				_mm256_mullo_epi32(b, _mm256_set1_epi32(c[2])));
+}
+
+void luv8(const LuvTables &t, const uint8_t *p, uint16_t *lo, uint16_t *uo, uint16_t *vo)
+{
+	// De-interleave 24 bytes into R, G, B.
+	const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i *>(p));
+	const __m128i c = _mm_loadl_epi64(reinterpret_cast<const __m128i *>(p + 16));
+	auto pick = [&](int o) {
+		const __m128i fromA = _mm_shuffle_epi8(
+			a, _mm_setr_epi8(o, o + 3, o + 6, o + 9, o + 12, o + 15 < 16 ? o + 15 : -1,
+					 -1, -1, -1, -1, -1, -1, -1, -1, -1, -1));
+		const __m128i fromC = _mm_shuffle_epi8(
+			c, _mm_setr_epi8(-1, -1, -1, -1, -1, o + 15 >= 16 ? o + 15 - 16 : -1, o + 2,
+					 o + 5, -1, -1, -1, -1, -1, -1, -1, -1));
+		return _mm256_cvtepu8_epi32(_mm_or_si128(fromA, fromC));
+	};
+	const __m256i r = pick(0), g = pick(1), b = pick(2);
+	const __m256i zero = _mm256_setzero_si256();
+
+	const __m256i X = dot3(t.cx, r, g, b), Y = dot3(t.cy, r, g, b), Z = dot3(t.cz, r, g, b);
+	const __m256i L = _mm256_and_si256(
+		_mm256_i32gather_epi32(reinterpret_cast<const int *>(t.l), _mm256_srli_epi32(Y, 18), 2),
+		_mm256_set1_epi32(0xFFFF));
+	const __m256i d = _mm256_add_epi32(
+		_mm256_add_epi32(_mm256_srai_epi32(X, 2),
+				 _mm256_mullo_epi32(_mm256_srai_epi32(Y, 2), _mm256_set1_epi32(15))),
+		_mm256_mullo_epi32(_mm256_srai_epi32(Z, 2), _mm256_set1_epi32(3)));
+	const __m256i dZero = _mm256_cmpeq_epi32(d, zero);
+
+	// Mantissa m in [2048, 4096) and exponent k (may be negative) of d.
+	const __m256i k = _mm256_sub_epi32(bitLength8(d), _mm256_set1_epi32(12));
+	const __m256i kPos = _mm256_max_epi32(k, zero), kNeg = _mm256_max_epi32(_mm256_sub_epi32(zero, k), zero);
+	__m256i m = _mm256_sllv_epi32(_mm256_srlv_epi32(d, kPos), kNeg);
+	m = _mm256_blendv_epi8(m, _mm256_set1_epi32(2048), dZero); // keep the gather in range
+	const __m256i rcp = _mm256_i32gather_epi32(reinterpret_cast<const int *>(t.rcp),
+						   _mm256_sub_epi32(m, _mm256_set1_epi32(2048)), 4);
+	const __m256i shift = _mm256_add_epi32(k, _mm256_set1_epi32(13));
+	// Lanes as 64-bit shift counts: even lanes in the low halves, odd in the high.
+	__m256i xd = mulShiftRoundU(X, rcp, shift);
+	__m256i yd = mulShiftRoundU(Y, rcp, shift);
+	xd = _mm256_andnot_si256(dZero, xd);
+	yd = _mm256_andnot_si256(dZero, yd);
+
+	const __m256i tu = _mm256_sub_epi32(_mm256_mullo_epi32(xd, _mm256_set1_epi32(52)), _mm256_set1_epi32(t.un13));
+	const __m256i tv = _mm256_sub_epi32(_mm256_mullo_epi32(yd, _mm256_set1_epi32(117)), _mm256_set1_epi32(t.vn13));
+	const __m256i U = _mm256_sub_epi32(mulShiftRound16S(L, tu), _mm256_set1_epi32(t.minu));
+	const __m256i V = _mm256_sub_epi32(mulShiftRound16S(L, tv), _mm256_set1_epi32(t.minv));
+
+	// Saturate to uint16 and store (packus works per 128-bit lane, hence the permutes).
+	const __m256i lu = _mm256_permute4x64_epi64(_mm256_packus_epi32(L, U), 0xD8);
+	const __m256i vv = _mm256_permute4x64_epi64(_mm256_packus_epi32(V, V), 0xD8);
+	_mm_storeu_si128(reinterpret_cast<__m128i *>(lo), _mm256_castsi256_si128(lu));
+	_mm_storeu_si128(reinterpret_cast<__m128i *>(uo), _mm256_extracti128_si256(lu, 1));
+	_mm_storeu_si128(reinterpret_cast<__m128i *>(vo), _mm256_castsi256_si128(vv));
+}
+
+} // namespace
+
+void rgbToLuv_avx2(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride, int width,
+		   int height, uint16_t *l, uint16_t *u, uint16_t *v, ptrdiff_t stride)
+{
+	for (int y = 0; y < height; y++) {
+		const uint8_t *p = rgb + y * rgbStride;
+		uint16_t *lo = l + y * stride, *uo = u + y * stride, *vo = v + y * stride;
+		int x = 0;
+		for (; x + 8 <= width; x += 8)
+			luv8(t, p + 3 * x, lo + x, uo + x, vo + x);
+		if (x < width)
+			rgbToLuv_ref(t, p + 3 * x, rgbStride, width - x, 1, lo + x, uo + x, vo + x, stride);
+	}
+}
+
+} // namespace kernels
+} // namespace calped
