@@ -36,7 +36,7 @@ const KernelTable &portableKernels()
 		triSumR_opt,
 		normalizeMag_ref,
 		shrink4_ref,
-		gradHist4_ref,
+		gradHist4_opt,
 		scanDepth2_ref,
 		scanTrees_ref,
 	};
@@ -57,6 +57,8 @@ const KernelTable &avx2Kernels()
 		t.triSum = triSumR_avx2;
 		t.resamplePlane = resamplePlane_avx2;
 		t.resampleRgb8 = resampleRgb8_avx2;
+		t.normalizeMag = normalizeMag_avx2;
+		t.gradHist4 = gradHist4_avx2;
 		return t;
 	}();
 	return table;

@@ -135,9 +135,11 @@ void triSumR_opt(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdif
 		 int width, int height, int r, uint32_t *scratch);
 
 // mag / (smoothedSum / (r+1)^4 + c): Q16 magnitude in, Q14 channel out, in place
-// (the toolbox's gradMagNorm).
+// (the toolbox's gradMagNorm). smoothedSum + normConst must fit 32 bits.
 void normalizeMag_ref(const GradientTables &t, uint16_t *mag, ptrdiff_t magStride,
 		      const uint32_t *smoothedSum, ptrdiff_t sumStride, int width, int height);
+void normalizeMag_avx2(const GradientTables &t, uint16_t *mag, ptrdiff_t magStride,
+		       const uint32_t *smoothedSum, ptrdiff_t sumStride, int width, int height);
 
 // ---- aggregation -------------------------------------------------------------------------
 // 4x4 block average (the toolbox's shrink by imResampleMex): dst is width/4 x height/4,
@@ -148,9 +150,16 @@ void shrink4_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height
 // Orientation histograms over 4x4 cells (gradHist, binSize 4): nOrients planes of
 // width/4 x height/4. softBin >= 0 splits each pixel between its two nearest
 // orientations (linear in angle); softBin < 0 gives it wholly to the nearest one.
+// scratch holds nOrients * width uint32.
 void gradHist4_ref(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
 		   int height, int nOrients, bool interpolate, uint16_t *const *hist,
 		   ptrdiff_t histStride, uint32_t *scratch);
+void gradHist4_opt(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		   int height, int nOrients, bool interpolate, uint16_t *const *hist,
+		   ptrdiff_t histStride, uint32_t *scratch);
+void gradHist4_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
+		    ptrdiff_t histStride, uint32_t *scratch);
 
 // ---- boosted trees over sliding windows ------------------------------------------------
 // A complete depth-2 tree with its feature offsets resolved for the level layout:

@@ -190,3 +190,46 @@ TEST(KernelEquality, RgbToLuv)
 		ASSERT_EQ(a, b) << k->name << " ramps";
 	}
 }
+
+TEST(KernelEquality, NormalizeMagnitude)
+{
+	std::mt19937 rng(7);
+	for (double c : { 0.005, 0.0, 1e-7 }) { // the INRIA constant, and ones that need the scalar path
+		GradientTables t;
+		buildGradientTables(t, 6, 5, c);
+		for (const KernelTable *k : tablesUnderTest())
+			for (Size s : kSizes) {
+				const int stride = s.w + 1;
+				auto magIn = randomPlane(rng, size_t(stride) * s.h, 65535);
+				std::vector<uint32_t> sum(size_t(stride) * s.h);
+				for (size_t i = 0; i < sum.size(); i++)
+					sum[i] = rng() % 3 == 0 ? rng() % 4096 : uint32_t(magIn[i]) * (1 + rng() % 1296);
+				auto a = magIn, b = magIn;
+				normalizeMag_ref(t, a.data(), stride, sum.data(), stride, s.w, s.h);
+				k->normalizeMag(t, b.data(), stride, sum.data(), stride, s.w, s.h);
+				ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " c " << c;
+			}
+	}
+}
+
+TEST(KernelEquality, OrientationHistograms)
+{
+	std::mt19937 rng(8);
+	for (const KernelTable *k : tablesUnderTest())
+		for (Size s : kSizes)
+			for (bool interpolate : { true, false }) {
+				const int stride = s.w + 3, w4 = s.w / 4, h4 = s.h / 4;
+				auto mag = randomPlane(rng, size_t(stride) * s.h, 65535);
+				auto orient = randomPlane(rng, size_t(stride) * s.h, (6 << kOrientQ) - 1);
+				std::vector<uint16_t> ha(size_t(6) * (w4 + 1) * (h4 + 1), 2), hb = ha;
+				uint16_t *pa[6], *pb[6];
+				for (int o = 0; o < 6; o++) {
+					pa[o] = ha.data() + size_t(o) * (w4 + 1) * (h4 + 1);
+					pb[o] = hb.data() + size_t(o) * (w4 + 1) * (h4 + 1);
+				}
+				std::vector<uint32_t> scratch(6 * (s.w + 4));
+				gradHist4_ref(mag.data(), orient.data(), stride, s.w, s.h, 6, interpolate, pa, w4 + 1, scratch.data());
+				k->gradHist4(mag.data(), orient.data(), stride, s.w, s.h, 6, interpolate, pb, w4 + 1, scratch.data());
+				ASSERT_EQ(ha, hb) << k->name << " " << s.w << "x" << s.h << " interpolate " << interpolate;
+			}
+}

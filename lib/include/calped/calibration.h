@@ -221,8 +221,7 @@ struct DltResult {
 
 // Estimates P from >= 6 correspondences with Hartley normalisation of both point sets and
 // an SVD. InvalidArgument for fewer than 6 points, non-finite values, coincident or coplanar
-// world points, or any other rank-deficient configuration. Runs at setup (it allocates);
-// OutOfMemory if that fails.
+// world points, or any other rank-deficient configuration. Does not allocate.
 Status estimateProjectionDlt(const PointCorrespondence *points, size_t count, DltResult &out);
 
 } // namespace calped

@@ -8,9 +8,9 @@
 #include <immintrin.h>
 
 #include <cstddef>
-#include <initializer_list>
 
 #include "opt/gradient_rows.h"
+#include "x86/avx2_util.h"
 
 namespace calped {
 namespace kernels {
@@ -24,22 +24,6 @@ static_assert(offsetof(GradientTables, fromSinAcute) ==
 static_assert(offsetof(GradientTables, fromSinObtuse) ==
 		      offsetof(GradientTables, fromSinAcute) + sizeof(uint16_t) * (4096 + 1),
 	      "orientation tables are contiguous");
-
-// Number of significant bits of each lane (0 for 0), by binary search.
-inline __m256i bitLength8(__m256i v)
-{
-	__m256i bits = _mm256_setzero_si256();
-	const __m256i zero = _mm256_setzero_si256();
-	for (int s : { 16, 8, 4, 2, 1 }) {
-		const __m256i shifted = _mm256_srli_epi32(v, s);
-		const __m256i nonzero = _mm256_xor_si256(_mm256_cmpeq_epi32(shifted, zero),
-							 _mm256_set1_epi32(-1));
-		bits = _mm256_add_epi32(bits, _mm256_and_si256(nonzero, _mm256_set1_epi32(s)));
-		v = _mm256_blendv_epi8(v, shifted, nonzero);
-	}
-	const __m256i one = _mm256_xor_si256(_mm256_cmpeq_epi32(v, zero), _mm256_set1_epi32(-1));
-	return _mm256_sub_epi32(bits, one); // v is 0 or 1 here; -1 where it is 1
-}
 
 void gradientPixels8(const GradientTables &t, const int32_t *gxp, const int32_t *gyp,
 		     uint16_t *mag, uint16_t *orient)
@@ -56,9 +40,7 @@ void gradientPixels8(const GradientTables &t, const int32_t *gxp, const int32_t 
 	const __m256i m = _mm256_srlv_epi32(m2, k);
 	const __m256i halfK = _mm256_srli_epi32(k, 1);
 
-	const __m256i sq = _mm256_and_si256(
-		_mm256_i32gather_epi32(reinterpret_cast<const int *>(t.sqrtQ8), m, 2),
-		_mm256_set1_epi32(0xFFFF));
+	const __m256i sq = gatherU16(t.sqrtQ8, m);
 	__m256i magv = _mm256_srli_epi32(
 		_mm256_add_epi32(_mm256_sllv_epi32(sq, halfK), _mm256_set1_epi32(256)), 9);
 	magv = _mm256_andnot_si256(isZero, magv);
@@ -85,9 +67,7 @@ void gradientPixels8(const GradientTables &t, const int32_t *gxp, const int32_t 
 						   _mm256_cmpgt_epi32(c12, zero));
 	__m256i index = _mm256_blendv_epi8(_mm256_add_epi32(sinBase, s12), cosIndex, useCos);
 	index = _mm256_blendv_epi8(index, _mm256_set1_epi32(4096), isZero);
-	const __m256i o = _mm256_and_si256(
-		_mm256_i32gather_epi32(reinterpret_cast<const int *>(t.fromCos), index, 2),
-		_mm256_set1_epi32(0xFFFF));
+	const __m256i o = gatherU16(t.fromCos, index);
 
 	// Pack to uint16 (packus works per 128-bit lane, hence the permute).
 	const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(magv, o), 0xD8);

@@ -4,44 +4,14 @@
 // multiplies on even and odd lanes; table reads are gathers.
 #include <immintrin.h>
 
-#include <initializer_list>
-
 #include "kernels.h"
 #include "fixed_point.h"
+#include "x86/avx2_util.h"
 
 namespace calped {
 namespace kernels {
 
 namespace {
-
-inline __m256i bitLength8(__m256i v)
-{
-	const __m256i zero = _mm256_setzero_si256(), ones = _mm256_set1_epi32(-1);
-	__m256i bits = zero;
-	for (int s : { 16, 8, 4, 2, 1 }) {
-		const __m256i shifted = _mm256_srli_epi32(v, s);
-		const __m256i nonzero = _mm256_xor_si256(_mm256_cmpeq_epi32(shifted, zero), ones);
-		bits = _mm256_add_epi32(bits, _mm256_and_si256(nonzero, _mm256_set1_epi32(s)));
-		v = _mm256_blendv_epi8(v, shifted, nonzero);
-	}
-	return _mm256_sub_epi32(bits, _mm256_xor_si256(_mm256_cmpeq_epi32(v, zero), ones));
-}
-
-// (a * b + 2^(s-1)) >> s per lane for non-negative a, b with a 64-bit product and a
-// result that fits 32 bits; s per lane in [1, 63].
-inline __m256i mulShiftRoundU(__m256i a, __m256i b, __m256i s)
-{
-	const __m256i one = _mm256_set1_epi64x(1);
-	const __m256i sEven = _mm256_and_si256(s, _mm256_set1_epi64x(0xFFFFFFFF));
-	const __m256i sOdd = _mm256_srli_epi64(s, 32);
-	const __m256i pe = _mm256_mul_epu32(a, b);
-	const __m256i po = _mm256_mul_epu32(_mm256_srli_epi64(a, 32), _mm256_srli_epi64(b, 32));
-	const __m256i re = _mm256_srlv_epi64(
-		_mm256_add_epi64(pe, _mm256_sllv_epi64(one, _mm256_sub_epi64(sEven, one))), sEven);
-	const __m256i ro = _mm256_srlv_epi64(
-		_mm256_add_epi64(po, _mm256_sllv_epi64(one, _mm256_sub_epi64(sOdd, one))), sOdd);
-	return _mm256_blend_epi32(re, _mm256_slli_epi64(ro, 32), 0xAA);
-}
 
 // (a * b + 2^15) >> 16 per lane for signed a, b whose result fits 32 bits: the low 32
 // bits of a logical 64-bit shift are the right ones even for negative products.
@@ -79,9 +49,7 @@ void luv8(const LuvTables &t, const uint8_t *p, uint16_t *lo, uint16_t *uo, uint
 	const __m256i zero = _mm256_setzero_si256();
 
 	const __m256i X = dot3(t.cx, r, g, b), Y = dot3(t.cy, r, g, b), Z = dot3(t.cz, r, g, b);
-	const __m256i L = _mm256_and_si256(
-		_mm256_i32gather_epi32(reinterpret_cast<const int *>(t.l), _mm256_srli_epi32(Y, 18), 2),
-		_mm256_set1_epi32(0xFFFF));
+	const __m256i L = gatherU16(t.l, _mm256_srli_epi32(Y, 18));
 	const __m256i d = _mm256_add_epi32(
 		_mm256_add_epi32(_mm256_srai_epi32(X, 2),
 				 _mm256_mullo_epi32(_mm256_srai_epi32(Y, 2), _mm256_set1_epi32(15))),
@@ -96,7 +64,6 @@ void luv8(const LuvTables &t, const uint8_t *p, uint16_t *lo, uint16_t *uo, uint
 	const __m256i rcp = _mm256_i32gather_epi32(reinterpret_cast<const int *>(t.rcp),
 						   _mm256_sub_epi32(m, _mm256_set1_epi32(2048)), 4);
 	const __m256i shift = _mm256_add_epi32(k, _mm256_set1_epi32(13));
-	// Lanes as 64-bit shift counts: even lanes in the low halves, odd in the high.
 	__m256i xd = mulShiftRoundU(X, rcp, shift);
 	__m256i yd = mulShiftRoundU(Y, rcp, shift);
 	xd = _mm256_andnot_si256(dZero, xd);

@@ -3,6 +3,7 @@
 // (bit-identical by construction and by test), vectorised by the compiler with 256-bit
 // integer operations (32-bit multiplies need SSE4.1 or better, which the baseline build
 // cannot assume).
+#include "opt/hist_body.h"
 #include "opt/resample_body.h"
 #include "opt/resample_rgb8_body.h"
 #include "opt/smooth_body.h"
@@ -37,6 +38,14 @@ void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, in
 {
 	resampleRgb8Body(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth, dstHeight,
 			 xTaps, yTaps, rowTmp);
+}
+
+void gradHist4_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
+		    ptrdiff_t histStride, uint32_t *scratch)
+{
+	gradHist4Body(mag, orient, stride, width, height, nOrients, interpolate, hist, histStride,
+		      scratch);
 }
 
 } // namespace kernels

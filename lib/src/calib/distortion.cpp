@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 namespace calped {

@@ -19,7 +19,7 @@ void ChannelComputer::init(const ModelParams &params, int maxWidth, int maxHeigh
 	orient_.allocate(maxWidth, maxHeight);
 	magSum_.allocate(maxWidth, maxHeight);
 	const size_t longest = size_t(std::max(maxWidth, maxHeight));
-	rowTmp_.assign(std::max(longest, size_t(params.nOrients) * (maxWidth / 4 + 1)), 0);
+	rowTmp_.assign(std::max(longest, size_t(params.nOrients) * (maxWidth + 4)), 0);
 	gradScratch_.assign(longest * 4 + 16, 0);
 }
 

@@ -37,6 +37,14 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		return Status::error(ErrorCode::ModelUnsupported,
 				     "calped implements shrink 4, 6 orientations in [0, pi), gradients "
 				     "over all colour channels and smoothing radius <= 1");
+	// The normalisation's sums are uint32: (r+1)^4 * 65535 + its constant must fit.
+	const double weightSum = std::pow(params.gradNormRad + 1.0, 4.0);
+	if (params.gradNormRad > 15 ||
+	    weightSum * 65535.0 + params.gradNormConst * 65536.0 * weightSum > 4294967295.0)
+		return Status::error(ErrorCode::ModelUnsupported,
+				     "gradient normalisation radius %d with constant %g exceeds calped's "
+				     "32-bit sums (radius <= 15)",
+				     int(params.gradNormRad), double(params.gradNormConst));
 	// Histograms interpolate between orientations (softBin 0) or not at all (-2); the
 	// toolbox's odd values also spread pixels over neighbouring cells.
 	if (params.softBin != 0 && params.softBin != -2)

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Body of the optimised orientation histograms, shared by the portable and SIMD builds.
+// Instead of scattering each pixel into its cell (the reference), every orientation bin
+// gets a row of per-pixel contributions in a branch-free loop the compiler vectorises,
+// then groups of four are summed. Integer sums, so bit-identical to ref/aggregate_ref.cpp.
+#pragma once
+
+#include <cstring>
+
+#include "kernels.h"
+
+namespace calped {
+namespace kernels {
+namespace {
+
+inline void gradHist4Body(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride,
+			  int width, int height, int nOrients, bool interpolate,
+			  uint16_t *const *hist, ptrdiff_t histStride, uint32_t *scratch)
+{
+	const int w4 = width / 4, h4 = height / 4, n = 4 * w4;
+	const uint32_t one = 1u << kOrientQ, fracMask = one - 1;
+	// scratch: nOrients rows of n per-pixel sums over the cell's four rows.
+	for (int cy = 0; cy < h4; cy++) {
+		std::memset(scratch, 0, sizeof(uint32_t) * nOrients * n);
+		for (int dy = 0; dy < 4; dy++) {
+			const uint16_t *mrow = mag + (4 * cy + dy) * stride;
+			const uint16_t *orow = orient + (4 * cy + dy) * stride;
+			for (int b = 0; b < nOrients; b++) {
+				uint32_t *acc = scratch + size_t(b) * n;
+				const uint32_t prev = b == 0 ? uint32_t(nOrients - 1) : uint32_t(b - 1);
+				for (int x = 0; x < n; x++) {
+					const uint32_t o = orow[x], m = mrow[x];
+					uint32_t w;
+					if (interpolate) {
+						const uint32_t o0 = o >> kOrientQ, f = o & fracMask;
+						w = (o0 == uint32_t(b) ? one - f : 0) + (o0 == prev ? f : 0);
+					} else {
+						uint32_t nearest = (o + (one >> 1)) >> kOrientQ;
+						nearest = nearest >= uint32_t(nOrients) ? 0 : nearest;
+						w = nearest == uint32_t(b) ? one : 0;
+					}
+					acc[x] += m * w;
+				}
+			}
+		}
+		for (int b = 0; b < nOrients; b++) {
+			const uint32_t *acc = scratch + size_t(b) * n;
+			uint16_t *out = hist[b] + cy * histStride;
+			for (int cx = 0; cx < w4; cx++) {
+				const uint64_t s = uint64_t(acc[4 * cx]) + acc[4 * cx + 1] + acc[4 * cx + 2] +
+						   acc[4 * cx + 3];
+				const uint64_t v = (s + (8u << kOrientQ)) >> (4 + kOrientQ);
+				out[cx] = static_cast<uint16_t>(v > 65535 ? 65535 : v);
+			}
+		}
+	}
+}
+
+} // namespace
+} // namespace kernels
+} // namespace calped
