@@ -29,28 +29,32 @@ inline void resamplePlaneBody(const uint16_t *src, ptrdiff_t srcStride, int srcW
 	bool threeTaps = true;
 	for (int x = 0; x < dstWidth && threeTaps; x++)
 		threeTaps = xTaps[x].count <= 3;
-	for (int y = 0; y < srcHeight; y++) {
-		const uint16_t *in = src + y * srcStride;
-		uint16_t *out = tmp + y * tmpStride;
-		if (threeTaps) {
+	if (threeTaps) {
+		// Column by column: each tap is decoded once for all rows.
+		for (int x = 0; x < dstWidth; x++) {
+			const ResampleTap &t = xTaps[x];
+			const int n = t.count;
+			const uint32_t w0 = uint32_t(t.weight[0]);
+			const uint32_t w1 = n > 1 ? uint32_t(t.weight[1]) : 0;
+			const uint32_t w2 = n > 2 ? uint32_t(t.weight[2]) : 0;
+			const int o1 = n > 1 ? 1 : 0, o2 = n > 2 ? 2 : 0;
+			const uint16_t *in = src + t.first;
+			uint16_t *out = tmp + x;
+			for (int y = 0; y < srcHeight; y++, in += srcStride, out += tmpStride)
+				*out = roundQ14(w0 * in[0] + w1 * in[o1] + w2 * in[o2]);
+		}
+	} else {
+		for (int y = 0; y < srcHeight; y++) {
+			const uint16_t *in = src + y * srcStride;
+			uint16_t *out = tmp + y * tmpStride;
 			for (int x = 0; x < dstWidth; x++) {
 				const ResampleTap &t = xTaps[x];
 				const uint16_t *p = in + t.first;
-				const int n = t.count;
-				const uint32_t w1 = n > 1 ? uint32_t(t.weight[1]) : 0;
-				const uint32_t w2 = n > 2 ? uint32_t(t.weight[2]) : 0;
-				const uint16_t v1 = p[n > 1 ? 1 : 0], v2 = p[n > 2 ? 2 : 0];
-				out[x] = roundQ14(uint32_t(t.weight[0]) * p[0] + w1 * v1 + w2 * v2);
+				uint32_t acc = 0;
+				for (int j = 0; j < t.count; j++)
+					acc += uint32_t(t.weight[j]) * p[j];
+				out[x] = roundQ14(acc);
 			}
-			continue;
-		}
-		for (int x = 0; x < dstWidth; x++) {
-			const ResampleTap &t = xTaps[x];
-			const uint16_t *p = in + t.first;
-			uint32_t acc = 0;
-			for (int j = 0; j < t.count; j++)
-				acc += uint32_t(t.weight[j]) * p[j];
-			out[x] = roundQ14(acc);
 		}
 	}
 	(void)srcWidth;
