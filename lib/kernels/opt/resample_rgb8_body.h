@@ -36,6 +36,9 @@ inline void resampleRgb8Body(const uint8_t *src, ptrdiff_t srcStride, int srcWid
 	const int shift = small ? 28 - sx - sy : 28;
 	const int64_t bias = (int64_t(1) << (shift - 1)) - 1; // halves round down
 	const int srcW3 = 3 * srcWidth;
+	bool twoTaps = true;
+	for (int x = 0; x < dstWidth && twoTaps; x++)
+		twoTaps = xTaps[x].count <= 2;
 	for (int y = 0; y < dstHeight; y++) {
 		const ResampleTap &ty = yTaps[y];
 		const int ySh = small ? sy : 0;
@@ -58,6 +61,23 @@ inline void resampleRgb8Body(const uint8_t *src, ptrdiff_t srcStride, int srcWid
 		}
 		uint8_t *out = dst + y * dstStride;
 		const int xSh = small ? sx : 0;
+		if (small && twoTaps) {
+			// 32-bit sums of at most two taps: a missing second tap reads the first
+			// pixel again with weight 0.
+			const int32_t b32 = int32_t(bias);
+			for (int x = 0; x < dstWidth; x++) {
+				const ResampleTap &tx = xTaps[x];
+				const int32_t *p = rowTmp + 3 * tx.first;
+				const int32_t w0 = tx.weight[0] >> xSh;
+				const int32_t w1 = tx.count > 1 ? tx.weight[1] >> xSh : 0;
+				const int32_t *q = tx.count > 1 ? p + 3 : p;
+				for (int c = 0; c < 3; c++) {
+					const int32_t v = (w0 * p[c] + w1 * q[c] + b32) >> shift;
+					out[3 * x + c] = static_cast<uint8_t>(v < 0 ? 0 : (v > 255 ? 255 : v));
+				}
+			}
+			continue;
+		}
 		for (int x = 0; x < dstWidth; x++) {
 			const ResampleTap &tx = xTaps[x];
 			const int32_t *p = rowTmp + 3 * tx.first;
