@@ -35,7 +35,7 @@ const KernelTable &portableKernels()
 		gradMagOrient_opt,
 		triSumR_opt,
 		normalizeMag_ref,
-		shrink4_ref,
+		shrink4_opt,
 		gradHist4_opt,
 		scanDepth2_ref,
 		scanTrees_ref,
@@ -59,6 +59,7 @@ const KernelTable &avx2Kernels()
 		t.resampleRgb8 = resampleRgb8_avx2;
 		t.normalizeMag = normalizeMag_avx2;
 		t.gradHist4 = gradHist4_avx2;
+		t.shrink4 = shrink4_avx2;
 		return t;
 	}();
 	return table;

@@ -143,9 +143,14 @@ void normalizeMag_avx2(const GradientTables &t, uint16_t *mag, ptrdiff_t magStri
 
 // ---- aggregation -------------------------------------------------------------------------
 // 4x4 block average (the toolbox's shrink by imResampleMex): dst is width/4 x height/4,
-// divided by a further 2^extraShift (to turn Q16 colour into Q14 channels).
+// divided by a further 2^extraShift (to turn Q16 colour into Q14 channels). scratch
+// holds width uint32.
 void shrink4_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
-		 uint16_t *dst, ptrdiff_t dstStride, int extraShift);
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void shrink4_opt(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void shrink4_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
 
 // Orientation histograms over 4x4 cells (gradHist, binSize 4): nOrients planes of
 // width/4 x height/4. softBin >= 0 splits each pixel between its two nearest

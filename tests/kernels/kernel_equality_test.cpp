@@ -233,3 +233,19 @@ TEST(KernelEquality, OrientationHistograms)
 				ASSERT_EQ(ha, hb) << k->name << " " << s.w << "x" << s.h << " interpolate " << interpolate;
 			}
 }
+
+TEST(KernelEquality, Shrink4)
+{
+	std::mt19937 rng(9);
+	for (const KernelTable *k : tablesUnderTest())
+		for (Size s : kSizes)
+			for (int extra : { 0, 2 }) {
+				const int stride = s.w + 3, w4 = s.w / 4, h4 = s.h / 4;
+				auto src = randomPlane(rng, size_t(stride) * s.h, 65535);
+				std::vector<uint16_t> a(size_t(w4 + 2) * (h4 + 1), 4), b = a;
+				std::vector<uint32_t> scratch(s.w + 4);
+				shrink4_ref(src.data(), stride, s.w, s.h, a.data(), w4 + 2, extra, scratch.data());
+				k->shrink4(src.data(), stride, s.w, s.h, b.data(), w4 + 2, extra, scratch.data());
+				ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " extra shift " << extra;
+			}
+}

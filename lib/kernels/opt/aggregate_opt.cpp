@@ -1,9 +1,15 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Orientation histograms, portable optimised build (see hist_body.h).
+// 4x4 aggregation, portable optimised build (see hist_body.h).
 #include "opt/hist_body.h"
 
 namespace calped {
 namespace kernels {
+
+void shrink4_opt(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch)
+{
+	shrink4Body(src, srcStride, width, height, dst, dstStride, extraShift, scratch);
+}
 
 void gradHist4_opt(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
 		   int height, int nOrients, bool interpolate, uint16_t *const *hist,

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Body of the optimised orientation histograms, shared by the portable and SIMD builds.
-// Instead of scattering each pixel into its cell (the reference), every orientation bin
-// gets a row of per-pixel contributions in a branch-free loop the compiler vectorises,
-// then groups of four are summed. Integer sums, so bit-identical to ref/aggregate_ref.cpp.
+// Bodies of the optimised 4x4 aggregation kernels, shared by the portable and SIMD
+// builds. Rows are accumulated in branch-free loops the compiler vectorises, then groups
+// of four are summed: the histograms give every orientation bin a row of per-pixel
+// contributions instead of scattering each pixel into its cell (the reference). Integer
+// sums, so bit-identical to ref/aggregate_ref.cpp.
 #pragma once
 
 #include <cstring>
@@ -12,6 +13,26 @@
 namespace calped {
 namespace kernels {
 namespace {
+
+// scratch: width uint32.
+inline void shrink4Body(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+			uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch)
+{
+	const int w4 = width / 4, h4 = height / 4, n = 4 * w4;
+	const int shift = 4 + extraShift;
+	const uint32_t half = 1u << (shift - 1);
+	for (int cy = 0; cy < h4; cy++) {
+		const uint16_t *r0 = src + 4 * cy * srcStride, *r1 = r0 + srcStride;
+		const uint16_t *r2 = r1 + srcStride, *r3 = r2 + srcStride;
+		for (int x = 0; x < n; x++)
+			scratch[x] = uint32_t(r0[x]) + r1[x] + r2[x] + r3[x];
+		uint16_t *out = dst + cy * dstStride;
+		for (int cx = 0; cx < w4; cx++) {
+			const uint32_t *a = scratch + 4 * cx;
+			out[cx] = static_cast<uint16_t>((a[0] + a[1] + a[2] + a[3] + half) >> shift);
+		}
+	}
+}
 
 inline void gradHist4Body(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride,
 			  int width, int height, int nOrients, bool interpolate,

@@ -9,7 +9,7 @@ namespace calped {
 namespace kernels {
 
 void shrink4_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
-		 uint16_t *dst, ptrdiff_t dstStride, int extraShift)
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *)
 {
 	const int shift = 4 + extraShift;
 	const int w4 = width / 4, h4 = height / 4;

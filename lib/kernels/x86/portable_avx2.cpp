@@ -40,6 +40,12 @@ void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, in
 			 xTaps, yTaps, rowTmp);
 }
 
+void shrink4_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch)
+{
+	shrink4Body(src, srcStride, width, height, dst, dstStride, extraShift, scratch);
+}
+
 void gradHist4_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
 		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
 		    ptrdiff_t histStride, uint32_t *scratch)

@@ -37,7 +37,7 @@ void ChannelComputer::compute(const Plane<const uint16_t> luv[3], int width, int
 			for (int y = 0; y < height; y++)
 				std::copy(luv[c].row(y), luv[c].row(y) + width, s.row(y));
 		k_->shrink4(s.data, s.stride, width, height, out[c].data, out[c].stride,
-				     kernels::kLuvQ - kernels::kQ);
+			    kernels::kLuvQ - kernels::kQ, rowTmp_.data());
 		smoothedPlanes[c] = s.data;
 	}
 
@@ -57,8 +57,8 @@ void ChannelComputer::compute(const Plane<const uint16_t> luv[3], int width, int
 	}
 	// Normalisation already produced Q14; a raw magnitude is still Q16.
 	const int magShift = params_.gradNormRad > 0 ? 0 : kernels::kLuvQ - kernels::kQ;
-	k_->shrink4(mag.data, mag.stride, width, height, out[3].data, out[3].stride,
-			     magShift);
+	k_->shrink4(mag.data, mag.stride, width, height, out[3].data, out[3].stride, magShift,
+		    rowTmp_.data());
 
 	uint16_t *hist[16];
 	for (int o = 0; o < params_.nOrients; o++)
