@@ -26,10 +26,22 @@ inline void resamplePlaneBody(const uint16_t *src, ptrdiff_t srcStride, int srcW
 	// Along rows. Outputs of at most three taps (enlarging, and shrinking by up to 2x,
 	// which is every use in the pyramid) take a fixed three-tap form: a missing tap
 	// reads the first sample again with weight 0, so no read leaves the row.
-	bool threeTaps = true;
-	for (int x = 0; x < dstWidth && threeTaps; x++)
-		threeTaps = xTaps[x].count <= 3;
-	if (threeTaps) {
+	bool threeTaps = true, halving = true;
+	for (int x = 0; x < dstWidth && threeTaps; x++) {
+		const ResampleTap &t = xTaps[x];
+		threeTaps = t.count <= 3;
+		halving = halving && t.count == 2 && t.first == 2 * x && t.weight[0] == kOne / 2 &&
+			  t.weight[1] == kOne / 2;
+	}
+	if (halving) {
+		// Exactly half the width (the computed octaves): (a + b + 1) / 2, row by row.
+		for (int y = 0; y < srcHeight; y++) {
+			const uint16_t *in = src + y * srcStride;
+			uint16_t *out = tmp + y * tmpStride;
+			for (int x = 0; x < dstWidth; x++)
+				out[x] = static_cast<uint16_t>((uint32_t(in[2 * x]) + in[2 * x + 1] + 1) >> 1);
+		}
+	} else if (threeTaps) {
 		// Column by column: each tap is decoded once for all rows.
 		for (int x = 0; x < dstWidth; x++) {
 			const ResampleTap &t = xTaps[x];
