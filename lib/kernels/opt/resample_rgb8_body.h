@@ -23,6 +23,25 @@ inline int commonWeightShift(const ResampleTap *taps, int n)
 	return s;
 }
 
+// Whether the taps are the toolbox's exact 2x enlargement: every output between two
+// inputs at weights 1/4 and 3/4, the two outer ones copies.
+inline bool isDoubling(const ResampleTap *taps, int n, int m)
+{
+	if (m != 2 * n || n < 2)
+		return false;
+	const int q = kOne / 4;
+	if (taps[0].count != 1 || taps[0].first != 0 || taps[m - 1].count != 1 ||
+	    taps[m - 1].first != n - 1)
+		return false;
+	for (int i = 1; i < n; i++) {
+		const ResampleTap &e = taps[2 * i], &o = taps[2 * i - 1];
+		if (e.count != 2 || e.first != i - 1 || e.weight[0] != q || e.weight[1] != 3 * q ||
+		    o.count != 2 || o.first != i - 1 || o.weight[0] != 3 * q || o.weight[1] != q)
+			return false;
+	}
+	return true;
+}
+
 inline void resampleRgb8Body(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
 			     uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 			     const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp)
@@ -39,6 +58,7 @@ inline void resampleRgb8Body(const uint8_t *src, ptrdiff_t srcStride, int srcWid
 	bool twoTaps = true;
 	for (int x = 0; x < dstWidth && twoTaps; x++)
 		twoTaps = xTaps[x].count <= 2;
+	const bool doubling = isDoubling(xTaps, srcWidth, dstWidth);
 	for (int y = 0; y < dstHeight; y++) {
 		const ResampleTap &ty = yTaps[y];
 		const int ySh = small ? sy : 0;
@@ -61,6 +81,28 @@ inline void resampleRgb8Body(const uint8_t *src, ptrdiff_t srcStride, int srcWid
 		}
 		uint8_t *out = dst + y * dstStride;
 		const int xSh = small ? sx : 0;
+		if (small && doubling) {
+			// out = (a + 3 b) or (3 b + c) scaled: whole pixels, in a loop of fixed shape.
+			const int32_t b32 = int32_t(bias);
+			const int32_t q = (kOne / 4) >> xSh;
+			auto put = [&](uint8_t *o, int32_t v) {
+				v >>= shift;
+				*o = static_cast<uint8_t>(v < 0 ? 0 : (v > 255 ? 255 : v));
+			};
+			for (int c = 0; c < 3; c++) {
+				put(out + c, 4 * q * rowTmp[c] + b32);
+				put(out + 3 * (dstWidth - 1) + c, 4 * q * rowTmp[3 * (srcWidth - 1) + c] + b32);
+			}
+			for (int i = 1; i < srcWidth; i++) {
+				const int32_t *a = rowTmp + 3 * (i - 1), *b = a + 3;
+				uint8_t *odd = out + 3 * (2 * i - 1), *even = out + 3 * (2 * i);
+				for (int c = 0; c < 3; c++) {
+					put(odd + c, 3 * q * a[c] + q * b[c] + b32);
+					put(even + c, q * a[c] + 3 * q * b[c] + b32);
+				}
+			}
+			continue;
+		}
 		if (small && twoTaps) {
 			// 32-bit sums of at most two taps: a missing second tap reads the first
 			// pixel again with weight 0.
