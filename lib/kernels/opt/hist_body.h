@@ -6,8 +6,6 @@
 // sums, so bit-identical to ref/aggregate_ref.cpp.
 #pragma once
 
-#include <cstring>
-
 #include "kernels.h"
 
 namespace calped {
@@ -42,8 +40,9 @@ inline void gradHist4Body(const uint16_t *mag, const uint16_t *orient, ptrdiff_t
 	const uint32_t one = 1u << kOrientQ, fracMask = one - 1;
 	// scratch: nOrients rows of n per-pixel sums over the cell's four rows.
 	for (int cy = 0; cy < h4; cy++) {
-		std::memset(scratch, 0, sizeof(uint32_t) * nOrients * n);
 		for (int dy = 0; dy < 4; dy++) {
+			// The first of the cell's rows starts the sums (no separate clearing pass).
+			const uint32_t keep = dy == 0 ? 0 : ~0u;
 			const uint16_t *mrow = mag + (4 * cy + dy) * stride;
 			const uint16_t *orow = orient + (4 * cy + dy) * stride;
 			for (int b = 0; b < nOrients; b++) {
@@ -60,7 +59,7 @@ inline void gradHist4Body(const uint16_t *mag, const uint16_t *orient, ptrdiff_t
 						nearest = nearest >= uint32_t(nOrients) ? 0 : nearest;
 						w = nearest == uint32_t(b) ? one : 0;
 					}
-					acc[x] += m * w;
+					acc[x] = (acc[x] & keep) + m * w;
 				}
 			}
 		}
