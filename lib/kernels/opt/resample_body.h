@@ -6,6 +6,8 @@
 // and sum to at most gain * 2^14.
 #pragma once
 
+#include <algorithm>
+
 #include "kernels.h"
 
 namespace calped {
@@ -16,6 +18,39 @@ inline uint16_t roundQ14(uint32_t acc)
 {
 	const uint32_t v = (acc + (1u << (kQ - 1))) >> kQ;
 	return static_cast<uint16_t>(v > 65535 ? 65535 : v);
+}
+
+// The column pass: tmp (rows already resampled) to dst, a whole row at a time.
+inline void resampleColumnsBody(uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+				const ResampleTap *yTaps, const uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	for (int y = 0; y < dstHeight; y++) {
+		const ResampleTap &t = yTaps[y];
+		uint16_t *out = dst + y * dstStride;
+		const uint16_t *r0 = tmp + t.first * tmpStride;
+		const uint32_t w0 = uint32_t(t.weight[0]);
+		if (t.count == 1) {
+			for (int x = 0; x < dstWidth; x++)
+				out[x] = roundQ14(w0 * r0[x]);
+		} else if (t.count == 2) {
+			const uint16_t *r1 = r0 + tmpStride;
+			const uint32_t w1 = uint32_t(t.weight[1]);
+			for (int x = 0; x < dstWidth; x++)
+				out[x] = roundQ14(w0 * r0[x] + w1 * r1[x]);
+		} else if (t.count == 3) {
+			const uint16_t *r1 = r0 + tmpStride, *r2 = r1 + tmpStride;
+			const uint32_t w1 = uint32_t(t.weight[1]), w2 = uint32_t(t.weight[2]);
+			for (int x = 0; x < dstWidth; x++)
+				out[x] = roundQ14(w0 * r0[x] + w1 * r1[x] + w2 * r2[x]);
+		} else {
+			for (int x = 0; x < dstWidth; x++) {
+				uint32_t acc = 0;
+				for (int j = 0; j < t.count; j++)
+					acc += uint32_t(t.weight[j]) * r0[j * tmpStride + x];
+				out[x] = roundQ14(acc);
+			}
+		}
+	}
 }
 
 inline void resamplePlaneBody(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
@@ -70,33 +105,7 @@ inline void resamplePlaneBody(const uint16_t *src, ptrdiff_t srcStride, int srcW
 		}
 	}
 	(void)srcWidth;
-	for (int y = 0; y < dstHeight; y++) {
-		const ResampleTap &t = yTaps[y];
-		uint16_t *out = dst + y * dstStride;
-		const uint16_t *r0 = tmp + t.first * tmpStride;
-		const uint32_t w0 = uint32_t(t.weight[0]);
-		if (t.count == 1) {
-			for (int x = 0; x < dstWidth; x++)
-				out[x] = roundQ14(w0 * r0[x]);
-		} else if (t.count == 2) {
-			const uint16_t *r1 = r0 + tmpStride;
-			const uint32_t w1 = uint32_t(t.weight[1]);
-			for (int x = 0; x < dstWidth; x++)
-				out[x] = roundQ14(w0 * r0[x] + w1 * r1[x]);
-		} else if (t.count == 3) {
-			const uint16_t *r1 = r0 + tmpStride, *r2 = r1 + tmpStride;
-			const uint32_t w1 = uint32_t(t.weight[1]), w2 = uint32_t(t.weight[2]);
-			for (int x = 0; x < dstWidth; x++)
-				out[x] = roundQ14(w0 * r0[x] + w1 * r1[x] + w2 * r2[x]);
-		} else {
-			for (int x = 0; x < dstWidth; x++) {
-				uint32_t acc = 0;
-				for (int j = 0; j < t.count; j++)
-					acc += uint32_t(t.weight[j]) * r0[j * tmpStride + x];
-				out[x] = roundQ14(acc);
-			}
-		}
-	}
+	resampleColumnsBody(dst, dstStride, dstWidth, dstHeight, yTaps, tmp, tmpStride);
 }
 
 } // namespace

@@ -4,7 +4,6 @@
 // integer operations (32-bit multiplies need SSE4.1 or better, which the baseline build
 // cannot assume).
 #include "opt/hist_body.h"
-#include "opt/resample_body.h"
 #include "opt/resample_rgb8_body.h"
 #include "opt/smooth_body.h"
 
@@ -21,15 +20,6 @@ void triSumR_avx2(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdi
 		  int width, int height, int r, uint32_t *scratch)
 {
 	triSumRBody(src, srcStride, dst, dstStride, width, height, r, scratch);
-}
-
-void resamplePlane_avx2(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
-			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
-			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
-			ptrdiff_t tmpStride)
-{
-	resamplePlaneBody(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth, dstHeight,
-			  xTaps, yTaps, tmp, tmpStride);
 }
 
 void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,

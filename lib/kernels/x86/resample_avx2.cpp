@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Plane resampling with AVX2. The row pass, which the portable code does one sample at
+// a time, works here on blocks of eight outputs whose taps all fall within 16
+// consecutive source samples (any ratio below about 1.7): the 16 samples are loaded once
+// and each tap's samples are picked by lane permutes. Other blocks, and the column pass,
+// use the shared portable body. Bit-identical to ref/resample_ref.cpp.
+#include <immintrin.h>
+
+#include "opt/resample_body.h"
+
+namespace calped {
+namespace kernels {
+
+namespace {
+
+constexpr int kChunk = 64; // blocks planned at a time (bounded stack use)
+
+struct BlockPlan {
+	int32_t base;        // first source sample of the block, or -1: not planned
+	int32_t index[3][8]; // per tap: source sample - base, in [0, 16)
+	int32_t weight[3][8];
+};
+
+bool planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
+{
+	const int base = taps[x0].first;
+	for (int i = 0; i < 8; i++) {
+		const ResampleTap &t = taps[x0 + i];
+		if (t.count > 3 || t.first < base || t.first + t.count - base > 16 || base + 16 > srcWidth)
+			return false;
+		for (int j = 0; j < 3; j++) {
+			p.index[j][i] = j < t.count ? t.first + j - base : t.first - base;
+			p.weight[j][i] = j < t.count ? t.weight[j] : 0;
+		}
+	}
+	p.base = base;
+	return true;
+}
+
+// The 32-bit lanes of lo (samples 0-7) or hi (8-15) that `index` names.
+inline __m256i pick(__m256i lo, __m256i hi, __m256i index)
+{
+	const __m256i fromLo = _mm256_permutevar8x32_epi32(lo, index);
+	const __m256i fromHi = _mm256_permutevar8x32_epi32(hi, index);
+	return _mm256_blendv_epi8(fromLo, fromHi, _mm256_cmpgt_epi32(index, _mm256_set1_epi32(7)));
+}
+
+void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+	     int dstWidth, const ResampleTap *xTaps, uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	BlockPlan plans[kChunk];
+	const __m256i half = _mm256_set1_epi32(1 << (kQ - 1)), max = _mm256_set1_epi32(65535);
+	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
+		const int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
+		for (int b = 0; b < blocks; b++)
+			if (!planBlock(xTaps, chunk + 8 * b, srcWidth, plans[b]))
+				plans[b].base = -1;
+		const int end = std::min(dstWidth, chunk + 8 * kChunk);
+		for (int y = 0; y < srcHeight; y++) {
+			const uint16_t *in = src + y * srcStride;
+			uint16_t *out = tmp + y * tmpStride;
+			for (int b = 0; b < blocks; b++) {
+				const BlockPlan &p = plans[b];
+				const int x0 = chunk + 8 * b;
+				if (p.base < 0) {
+					for (int x = x0; x < x0 + 8; x++) {
+						const ResampleTap &t = xTaps[x];
+						uint32_t acc = 0;
+						for (int j = 0; j < t.count; j++)
+							acc += uint32_t(t.weight[j]) * in[t.first + j];
+						out[x] = roundQ14(acc);
+					}
+					continue;
+				}
+				const __m256i s16 = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(in + p.base));
+				const __m256i lo = _mm256_cvtepu16_epi32(_mm256_castsi256_si128(s16));
+				const __m256i hi = _mm256_cvtepu16_epi32(_mm256_extracti128_si256(s16, 1));
+				__m256i acc = half;
+				for (int j = 0; j < 3; j++) {
+					const __m256i idx = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p.index[j]));
+					const __m256i w = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p.weight[j]));
+					acc = _mm256_add_epi32(acc, _mm256_mullo_epi32(pick(lo, hi, idx), w));
+				}
+				// Unsigned sums below 2^32: shift logically, then saturate to 16 bits.
+				const __m256i v = _mm256_min_epu32(_mm256_srli_epi32(acc, kQ), max);
+				const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(v, v), 0xD8);
+				_mm_storeu_si128(reinterpret_cast<__m128i *>(out + x0), _mm256_castsi256_si128(packed));
+			}
+			for (int x = chunk + 8 * blocks; x < end; x++) {
+				const ResampleTap &t = xTaps[x];
+				uint32_t acc = 0;
+				for (int j = 0; j < t.count; j++)
+					acc += uint32_t(t.weight[j]) * in[t.first + j];
+				out[x] = roundQ14(acc);
+			}
+		}
+	}
+}
+
+} // namespace
+
+void resamplePlane_avx2(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride)
+{
+	rowPass(src, srcStride, srcWidth, srcHeight, dstWidth, xTaps, tmp, tmpStride);
+	resampleColumnsBody(dst, dstStride, dstWidth, dstHeight, yTaps, tmp, tmpStride);
+}
+
+} // namespace kernels
+} // namespace calped
