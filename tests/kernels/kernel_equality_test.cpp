@@ -91,6 +91,27 @@ TEST(KernelEquality, ResamplePlane)
 				}
 }
 
+TEST(KernelEquality, ResamplePlaneHalvingAndLongRows)
+{
+	// Widths with several full SIMD blocks, exact halving (the computed octaves) and the
+	// ratios of approximated levels.
+	std::mt19937 rng(10);
+	const std::pair<int, int> widths[] = { { 64, 32 }, { 130, 65 }, { 96, 48 }, { 192, 176 },
+					       { 144, 161 }, { 200, 117 }, { 97, 103 } };
+	for (const KernelTable *k : tablesUnderTest())
+		for (auto [sw, dw] : widths) {
+			const int sh = 9, dh = 5;
+			std::vector<ResampleTap> xt(dw), yt(dh);
+			ASSERT_TRUE(buildResampleTaps(sw, dw, 1.0, xt.data()));
+			ASSERT_TRUE(buildResampleTaps(sh, dh, 1.05, yt.data()));
+			auto src = randomPlane(rng, size_t(sw + 3) * sh, 65535);
+			std::vector<uint16_t> a(size_t(dw) * dh, 1), b = a, tmp(size_t(dw) * sh);
+			resamplePlane_ref(src.data(), sw + 3, sw, sh, a.data(), dw, dw, dh, xt.data(), yt.data(), tmp.data(), dw);
+			k->resamplePlane(src.data(), sw + 3, sw, sh, b.data(), dw, dw, dh, xt.data(), yt.data(), tmp.data(), dw);
+			ASSERT_EQ(a, b) << k->name << " " << sw << "->" << dw;
+		}
+}
+
 TEST(KernelEquality, ResampleTapsKeepFlatInputFlat)
 {
 	// A constant image resampled with gain 1 stays exactly constant.

@@ -151,8 +151,9 @@ public:
 	// World height of a box given its foot (bottom centre) and head (top centre) pixels.
 	double boxWorldHeight(const Eigen::Vector2d &footPixel,
 			      const Eigen::Vector2d &headPixel) const;
-	// Pixel height (foot row minus captured head row) of a person of world height `height`
-	// whose foot is at pixel `footPixel`.
+	// Pixel height of an axis-aligned box of world height `height` whose foot is at pixel
+	// `footPixel`: the inverse of boxWorldHeight() (with distortion the head row is refined
+	// so that boxWorldHeight(foot, (foot.x, foot.y - result)) == height).
 	double boxPixelHeight(const Eigen::Vector2d &footPixel, double height) const;
 
 private:

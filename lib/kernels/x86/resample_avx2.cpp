@@ -45,9 +45,46 @@ inline __m256i pick(__m256i lo, __m256i hi, __m256i index)
 	return _mm256_blendv_epi8(fromLo, fromHi, _mm256_cmpgt_epi32(index, _mm256_set1_epi32(7)));
 }
 
+bool isHalving(const ResampleTap *taps, int dstWidth)
+{
+	for (int x = 0; x < dstWidth; x++) {
+		const ResampleTap &t = taps[x];
+		if (t.count != 2 || t.first != 2 * x || t.weight[0] != kOne / 2 || t.weight[1] != kOne / 2)
+			return false;
+	}
+	return true;
+}
+
+// Exactly half the width: (a + b + 1) >> 1 is the unsigned average instruction.
+void halveRows(const uint16_t *src, ptrdiff_t srcStride, int srcHeight, int dstWidth,
+	       uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	const __m256i lowHalf = _mm256_set1_epi32(0xFFFF);
+	for (int y = 0; y < srcHeight; y++) {
+		const uint16_t *in = src + y * srcStride;
+		uint16_t *out = tmp + y * tmpStride;
+		int x = 0;
+		for (; x + 16 <= dstWidth; x += 16) {
+			const __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(in + 2 * x));
+			const __m256i b = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(in + 2 * x + 16));
+			// Even samples in the low halves of 32-bit lanes, odd ones in the high halves.
+			const __m256i even = _mm256_packus_epi32(_mm256_and_si256(a, lowHalf), _mm256_and_si256(b, lowHalf));
+			const __m256i odd = _mm256_packus_epi32(_mm256_srli_epi32(a, 16), _mm256_srli_epi32(b, 16));
+			const __m256i avg = _mm256_permute4x64_epi64(_mm256_avg_epu16(even, odd), 0xD8);
+			_mm256_storeu_si256(reinterpret_cast<__m256i *>(out + x), avg);
+		}
+		for (; x < dstWidth; x++)
+			out[x] = static_cast<uint16_t>((uint32_t(in[2 * x]) + in[2 * x + 1] + 1) >> 1);
+	}
+}
+
 void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
 	     int dstWidth, const ResampleTap *xTaps, uint16_t *tmp, ptrdiff_t tmpStride)
 {
+	if (isHalving(xTaps, dstWidth)) {
+		halveRows(src, srcStride, srcHeight, dstWidth, tmp, tmpStride);
+		return;
+	}
 	BlockPlan plans[kChunk];
 	const __m256i half = _mm256_set1_epi32(1 << (kQ - 1)), max = _mm256_set1_epi32(65535);
 	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {

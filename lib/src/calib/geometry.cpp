@@ -110,7 +110,28 @@ double CameraModel::boxPixelHeight(const Eigen::Vector2d &footPixel, double heig
 	Eigen::Vector2d head;
 	if (!headPoint(undistort(footPixel), height, head))
 		return kNaN;
-	return footPixel.y() - distort(head).y();
+	double r1 = distort(head).y();
+	if (distortionModel_ == DistortionModel::None || !std::isfinite(r1))
+		return footPixel.y() - r1;
+
+	// Distortion moves the true head off the foot's column, but a box's head is on it:
+	// refine the row (secant steps) so that boxWorldHeight() of the box gives `height`
+	// back, making the two functions exact inverses for axis-aligned boxes.
+	auto residual = [&](double row) {
+		return boxWorldHeight(footPixel, Eigen::Vector2d(footPixel.x(), row)) - height;
+	};
+	double r0 = r1 + 1.0;
+	double f0 = residual(r0), f1 = residual(r1);
+	for (int i = 0; i < 20 && std::isfinite(f0) && std::isfinite(f1) && f1 != f0; i++) {
+		const double r2 = r1 - f1 * (r1 - r0) / (f1 - f0);
+		r0 = r1;
+		f0 = f1;
+		r1 = r2;
+		f1 = residual(r1);
+		if (std::abs(r1 - r0) < 1e-10)
+			break;
+	}
+	return std::isfinite(f1) ? footPixel.y() - r1 : kNaN;
 }
 
 } // namespace calped
