@@ -75,7 +75,8 @@ const char *quote(std::string_view s, char *buffer, size_t size)
 		return "";
 	size_t n = s.size();
 	if (n < size) {
-		std::memcpy(buffer, s.data(), n);
+		if (n > 0) // an empty view may have no data pointer at all
+			std::memcpy(buffer, s.data(), n);
 		buffer[n] = '\0';
 		return buffer;
 	}
