@@ -3,6 +3,7 @@
 // decoded first, then each is detected `--repeat` times; prints median and mean per
 // stage. Usage:
 //   bench_detect --model BLOB --frames DIR [--resize R] [--count N] [--repeat K]
+//                [--calib FILE [--calibrated]]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -11,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include <calped/detector.h>
+#include <calped/calped.h>
 
 #include "test_data.h"
 
@@ -38,7 +39,8 @@ double mean(const std::vector<double> &v)
 
 int usage()
 {
-	std::fprintf(stderr, "usage: bench_detect --model BLOB --frames DIR [--resize R] [--count N] [--repeat K]\n");
+	std::fprintf(stderr, "usage: bench_detect --model BLOB --frames DIR [--resize R] [--count N] "
+			     "[--repeat K] [--calib FILE [--calibrated]]\n");
 	return 2;
 }
 
@@ -46,11 +48,16 @@ int usage()
 
 int main(int argc, char **argv)
 {
-	std::string modelPath, framesDir;
+	std::string modelPath, framesDir, calibPath;
 	double resize = 1.0;
 	int count = 50, repeat = 1;
+	bool calibrated = false;
 	for (int i = 1; i < argc; i++) {
 		const std::string a = argv[i];
+		if (a == "--calibrated") {
+			calibrated = true;
+			continue;
+		}
 		if (i + 1 >= argc)
 			return usage();
 		if (a == "--model")
@@ -63,6 +70,8 @@ int main(int argc, char **argv)
 			count = std::atoi(argv[++i]);
 		else if (a == "--repeat")
 			repeat = std::atoi(argv[++i]);
+		else if (a == "--calib")
+			calibPath = argv[++i];
 		else
 			return usage();
 	}
@@ -106,6 +115,23 @@ int main(int argc, char **argv)
 	cfg.maxWidth = frames[0].width;
 	cfg.maxHeight = frames[0].height;
 	cfg.resize = resize;
+	CameraModel camera;
+	if (!calibPath.empty()) {
+		std::vector<uint8_t> text;
+		if (!test::readFile(calibPath, text)) {
+			std::fprintf(stderr, "bench_detect: cannot read %s\n", calibPath.c_str());
+			return 1;
+		}
+		st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
+				     calibPath.c_str(), camera);
+		if (!st.ok()) {
+			std::fprintf(stderr, "bench_detect: %s\n", st.message());
+			return 1;
+		}
+		cfg.camera = &camera;
+	}
+	if (calibrated)
+		cfg.method = DetectionMethod::Calibrated;
 	std::unique_ptr<Detector> det;
 	st = Detector::create(model, cfg, det);
 	if (!st.ok()) {
@@ -138,8 +164,9 @@ int main(int argc, char **argv)
 			computed = s.computedLevels;
 		}
 	const double n = double(total.size());
-	std::printf("frames %zu x %d, %dx%d, resize %.2f: %d levels (%d computed), %.0f windows/frame, %.2f detections/frame\n",
-		    frames.size(), repeat, frames[0].width, frames[0].height, resize, levels, computed,
+	std::printf("%s, frames %zu x %d, %dx%d, resize %.2f: %d levels (%d computed), %.0f windows/frame, %.2f detections/frame\n",
+		    calibrated ? "calibrated" : "generic", frames.size(), repeat, frames[0].width,
+		    frames[0].height, resize, levels, computed,
 		    windows / n, detections / n);
 	std::printf("ms per frame      median   mean\n");
 	std::printf("  total          %7.2f %7.2f\n", median(total), mean(total));

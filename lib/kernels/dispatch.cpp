@@ -20,6 +20,8 @@ const KernelTable &referenceKernels()
 		gradHist4_ref,
 		scanDepth2_ref,
 		scanTrees_ref,
+		scanDepth2List_ref,
+		scanTreesList_ref,
 	};
 	return table;
 }
@@ -39,6 +41,8 @@ const KernelTable &portableKernels()
 		gradHist4_opt,
 		scanDepth2_ref,
 		scanTrees_ref,
+		scanDepth2List_ref,
+		scanTreesList_ref,
 	};
 	return table;
 }

@@ -200,6 +200,13 @@ uint64_t scanDepth2_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int
 uint64_t scanTrees_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
 		       const TreeNode *nodes, int nTrees, int nodesPerTree, int32_t cascThr,
 		       WindowHit *hits, uint64_t capacity);
+// The same over a list of windows, each packed as row << 16 | column (calibrated mode).
+uint64_t scanDepth2List_ref(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
+			    size_t count, int step, const Depth2Tree *trees, int nTrees,
+			    int32_t cascThr, WindowHit *hits, uint64_t capacity);
+uint64_t scanTreesList_ref(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
+			   size_t count, int step, const TreeNode *nodes, int nTrees,
+			   int nodesPerTree, int32_t cascThr, WindowHit *hits, uint64_t capacity);
 
 // AVX2 builds of the portable optimised kernels (x86/portable_avx2.cpp).
 void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
@@ -230,6 +237,8 @@ struct KernelTable {
 	decltype(&gradHist4_ref) gradHist4;
 	decltype(&scanDepth2_ref) scanDepth2;
 	decltype(&scanTrees_ref) scanTrees;
+	decltype(&scanDepth2List_ref) scanDepth2List;
+	decltype(&scanTreesList_ref) scanTreesList;
 };
 
 // The plain scalar references (the specification).

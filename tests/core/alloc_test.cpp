@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <new>
 
-#include <calped/detector.h>
+#include <calped/calped.h>
 
 #include "synthetic.h"
 #include "test_data.h"
@@ -101,6 +101,33 @@ TEST(BoundedMemory, DetectAllocatesNothingSynthetic)
 		std::printf("resize %.1f: %d detections over the frames, 0 allocations\n", resize, detections);
 		EXPECT_GT(detections, 0);
 	}
+}
+
+TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
+{
+	Eigen::Matrix3d K;
+	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	DetectorConfig cfg;
+	cfg.maxWidth = 320;
+	cfg.maxHeight = 240;
+	cfg.resize = 2.0;
+	cfg.method = DetectionMethod::Calibrated;
+	cfg.camera = &camera;
+	cfg.cascadeThreshold = -10.0f;
+	std::unique_ptr<Detector> det;
+	ASSERT_TRUE(Detector::create(test::randomModel(7, 512), cfg, det).ok());
+	std::vector<std::vector<uint8_t>> frames;
+	for (uint32_t s = 0; s < 3; s++)
+		frames.push_back(test::randomImage(s, 320, 240));
+	int detections = 0;
+	EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0);
+	std::printf("calibrated, resize 2: %d detections, %llu windows in the last frame, 0 allocations\n",
+		    detections, (unsigned long long)det->lastStats().windows);
+	EXPECT_GT(det->lastStats().windows, 0u);
 }
 
 TEST(BoundedMemory, DetectAllocatesNothingOnPets)

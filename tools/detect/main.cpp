@@ -84,6 +84,20 @@ int run(const Options &opt)
 	config.maxHeight = maxH;
 	config.resize = opt.resize;
 	config.disableNms = opt.noNms;
+	CameraModel camera;
+	if (!opt.calibPath.empty()) {
+		std::vector<uint8_t> text;
+		if (!readFile(opt.calibPath, text, error, "calibration "))
+			return fail(kExitRuntime, error);
+		st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
+				     opt.calibPath.c_str(), camera);
+		if (!st.ok())
+			return fail(kExitRuntime, std::string("calibration: ") + st.message());
+		config.camera = &camera;
+	}
+	config.method = opt.calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;
+	config.minPersonHeight = opt.minHeight;
+	config.maxPersonHeight = opt.maxHeight;
 	std::unique_ptr<Detector> detector;
 	st = Detector::create(model, config, detector);
 	if (!st.ok())

@@ -56,6 +56,11 @@ const char *usageText()
 	       "  --overlay-every K   overlay only frames 1, 1+K, 1+2K, ... (default 1)\n"
 	       "  --max-frames N      stop after the first N frames\n"
 	       "  --no-nms            keep every window that passed the cascade\n"
+	       "  --calib FILE        camera calibration (Tsai XML, Town Centre .ci, plain P,\n"
+	       "                      OpenCV YAML): detections gain ground position and height\n"
+	       "  --method M          generic (default) or calibrated (needs --calib)\n"
+	       "  --min-height H      smallest plausible person, metres (default 1.4)\n"
+	       "  --max-height H      tallest plausible person, metres (default 2.2)\n"
 	       "  --quiet             no progress or summary on standard error\n"
 	       "  -h, --help          show this help\n"
 	       "\n"
@@ -105,7 +110,8 @@ bool parseOptions(int argc, const char *const *argv, Options &out, std::string &
 		}
 
 		static const char *const kValued[] = { "--model", "--resize", "--csv", "--jsonl",
-						       "--overlay", "--overlay-every", "--max-frames" };
+						       "--overlay", "--overlay-every", "--max-frames",
+						       "--calib", "--method", "--min-height", "--max-height" };
 		bool known = false;
 		for (const char *k : kValued)
 			known = known || name == k;
@@ -148,6 +154,25 @@ bool parseOptions(int argc, const char *const *argv, Options &out, std::string &
 				return false;
 			}
 			out.overlayEvery = static_cast<int>(k);
+		} else if (name == "--calib") {
+			if (value.empty()) {
+				error = "--calib needs a file name";
+				return false;
+			}
+			out.calibPath = value;
+		} else if (name == "--method") {
+			if (value != "generic" && value != "calibrated") {
+				error = "--method must be generic or calibrated, got '" + value + "'";
+				return false;
+			}
+			out.calibrated = value == "calibrated";
+		} else if (name == "--min-height" || name == "--max-height") {
+			double h = 0;
+			if (!parseDouble(value, h) || !(h > 0.0) || h >= 10.0) {
+				error = name + " must be a height in metres, > 0 and < 10, got '" + value + "'";
+				return false;
+			}
+			(name == "--min-height" ? out.minHeight : out.maxHeight) = h;
 		} else if (name == "--max-frames") {
 			long n = 0;
 			if (!parseLong(value, n) || n < 1) {
@@ -164,6 +189,14 @@ bool parseOptions(int argc, const char *const *argv, Options &out, std::string &
 	}
 	if (out.inputs.empty()) {
 		error = "no input images or folders given (try --help)";
+		return false;
+	}
+	if (out.calibrated && out.calibPath.empty()) {
+		error = "--method calibrated needs --calib FILE";
+		return false;
+	}
+	if (out.minHeight > out.maxHeight) {
+		error = "--min-height is above --max-height";
 		return false;
 	}
 	if (!out.csvPath.empty() && out.csvPath == out.jsonlPath) {

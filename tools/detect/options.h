@@ -16,6 +16,10 @@ struct Options {
 	int overlayEvery = 1;
 	long maxFrames = 0; // 0 means every frame
 	bool noNms = false;
+	std::string calibPath;         // calibration file (any format calibration.h reads)
+	bool calibrated = false;       // --method calibrated
+	double minHeight = 1.4;        // plausible person heights, metres
+	double maxHeight = 2.2;
 	bool quiet = false;
 	bool help = false;
 	std::vector<std::string> inputs;

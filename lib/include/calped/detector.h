@@ -12,6 +12,13 @@
 
 namespace calped {
 
+class CameraModel;
+
+// Generic: Dollár's detector, every window of every pyramid level. Calibrated: the
+// thesis's method (chapter 3): only pyramid levels and windows where a person of
+// plausible world height can stand, given the camera's calibration.
+enum class DetectionMethod { Generic, Calibrated };
+
 struct DetectorConfig {
 	// Largest input frame (before resizing) that detect() will accept.
 	int maxWidth = 1920;
@@ -27,17 +34,28 @@ struct DetectorConfig {
 	float cascadeThreshold = __builtin_nanf("");
 	// Skip non-maximum suppression (returns every window that passed the cascade).
 	bool disableNms = false;
+
+	// Calibrated mode. The camera is copied by create(); its pixels are the input frame's
+	// (before resize), and every frame must then be exactly maxWidth x maxHeight.
+	DetectionMethod method = DetectionMethod::Generic;
+	const CameraModel *camera = nullptr;
+	// Plausible pedestrian heights, metres (calibrated mode).
+	double minPersonHeight = 1.4;
+	double maxPersonHeight = 2.2;
 };
 
-// One detection in input-image pixels: top-left corner, size, classifier score.
+// One detection in input-image pixels: top-left corner, size, classifier score. With a
+// calibration, also where the person stands on the ground (metres, world x and y) and
+// the box's world height (metres); NaN without one, or when the foot is above the horizon.
 struct Detection {
 	float x = 0, y = 0, w = 0, h = 0;
 	float score = 0;
+	float groundX = __builtin_nanf(""), groundY = __builtin_nanf(""), worldHeight = __builtin_nanf("");
 };
 
 // What the detector did on the last frame (counters come from the detector itself).
 struct FrameStats {
-	int levels = 0;          // pyramid levels
+	int levels = 0;          // pyramid levels used
 	int computedLevels = 0;  // levels whose channels were computed (octaves)
 	uint64_t windows = 0;    // classifier windows evaluated (CApF)
 	uint64_t candidates = 0; // windows that passed the cascade

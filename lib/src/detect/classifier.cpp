@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "detect/classifier.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace calped {
@@ -70,13 +71,31 @@ void Classifier::setCascadeThreshold(float thr)
 	cascThr_ = static_cast<int32_t>(std::floor(double(thr) * (1 << kScoreFracBits)));
 }
 
+void Classifier::windowGrid(int paddedHeight, int paddedWidth, int &rows, int &cols) const
+{
+	const int shrink = params_.shrink, stride = params_.stride;
+	// The toolbox's window counts: ceil((size * shrink - model + 1) / stride).
+	rows = std::max(0, (paddedHeight * shrink - params_.modelDsPadH + stride) / stride);
+	cols = std::max(0, (paddedWidth * shrink - params_.modelDsPadW + stride) / stride);
+}
+
+uint64_t Classifier::scanList(const LevelChannels &level, const uint32_t *windows, size_t count,
+			      kernels::WindowHit *hits, uint64_t capacity) const
+{
+	const int step = params_.stride / params_.shrink;
+	if (depth2_)
+		return k_->scanDepth2List(level.data, level.rowStride, windows, count, step,
+					  depth2Trees_.data(), nTrees_, cascThr_, hits, capacity);
+	return k_->scanTreesList(level.data, level.rowStride, windows, count, step, nodes_.data(),
+				 nTrees_, nodesPerTree_, cascThr_, hits, capacity);
+}
+
 uint64_t Classifier::scan(const LevelChannels &level, kernels::WindowHit *hits,
 			  uint64_t capacity, uint64_t *windows) const
 {
 	const int shrink = params_.shrink, stride = params_.stride;
-	// The toolbox's window counts: ceil((size * shrink - model + 1) / stride).
-	const int rows = (level.paddedHeight * shrink - params_.modelDsPadH + stride) / stride;
-	const int cols = (level.paddedWidth * shrink - params_.modelDsPadW + stride) / stride;
+	int rows, cols;
+	windowGrid(level.paddedHeight, level.paddedWidth, rows, cols);
 	if (rows <= 0 || cols <= 0)
 		return 0;
 	*windows += uint64_t(rows) * cols;

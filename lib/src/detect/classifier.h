@@ -24,6 +24,13 @@ public:
 	uint64_t scan(const LevelChannels &level, kernels::WindowHit *hits, uint64_t capacity,
 		      uint64_t *windows) const;
 
+	// Only the listed windows (row << 16 | column) of one level.
+	uint64_t scanList(const LevelChannels &level, const uint32_t *windows, size_t count,
+			  kernels::WindowHit *hits, uint64_t capacity) const;
+
+	// Window rows and columns of a level with this padded size (the toolbox's counts).
+	void windowGrid(int paddedHeight, int paddedWidth, int &rows, int &cols) const;
+
 	int32_t cascadeThreshold() const { return cascThr_; }
 	void setCascadeThreshold(float thr);
 

@@ -61,6 +61,10 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 			resizeY_.resize(taps);
 			resizeRow_.assign(size_t(cfg.maxWidth) * 3 + 8, 0);
 		}
+		if (cfg.camera) {
+			camera_ = *cfg.camera;
+			hasCamera_ = true;
+		}
 		hits_.resize(cfg.maxCandidates);
 		candidates_.resize(cfg.maxCandidates);
 		sorted_.resize(cfg.maxCandidates);
@@ -68,7 +72,43 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory, "detector buffers do not fit in memory");
 	}
+	if (cfg.method == DetectionMethod::Calibrated)
+		return initCalibrated();
 	return Status::success();
+}
+
+Status DetectorImpl::initCalibrated()
+{
+	if (!hasCamera_)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "calibrated mode needs a camera (DetectorConfig::camera)");
+	// The plan holds for one frame size: the configured maximum.
+	ScaleList scales;
+	Status st = pyramid.scalesFor(maxWidth_, maxHeight_, scales);
+	if (!st.ok())
+		return st;
+	st = plan_.build(camera_, params_, scales, config.resize, pyramid.padCellsH(),
+			 pyramid.padCellsW(), classifier, config.minPersonHeight,
+			 config.maxPersonHeight);
+	if (!st.ok())
+		return st;
+	for (int i = 0; i < scales.count; i++)
+		levelNeeded_[i] = plan_.levelNeeded(i);
+	return Status::success();
+}
+
+void DetectorImpl::addWorldCoordinates(Detection *boxes, int n) const
+{
+	for (int i = 0; i < n; i++) {
+		Detection &d = boxes[i];
+		const Eigen::Vector2d foot(d.x + d.w / 2.0, d.y + double(d.h)), head(d.x + d.w / 2.0, d.y);
+		Eigen::Vector2d ground;
+		if (camera_.pixelToGround(foot, ground)) {
+			d.groundX = float(ground.x());
+			d.groundY = float(ground.y());
+		}
+		d.worldHeight = float(camera_.boxWorldHeight(foot, head));
+	}
 }
 
 Status DetectorImpl::checkImage(const ImageView &image) const
@@ -87,6 +127,11 @@ Status DetectorImpl::checkImage(const ImageView &image) const
 		return Status::error(ErrorCode::ImageTooLarge,
 				     "image %dx%d exceeds the configured maximum %dx%d", image.width,
 				     image.height, config.maxWidth, config.maxHeight);
+	if (config.method == DetectionMethod::Calibrated &&
+	    (image.width != config.maxWidth || image.height != config.maxHeight))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "calibrated mode is set up for %dx%d frames, got %dx%d",
+				     config.maxWidth, config.maxHeight, image.width, image.height);
 	return Status::success();
 }
 
@@ -136,7 +181,8 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	}
 	stats.msResize = msSince(tStart);
 
-	st = pyramid.build(rgb, stride, width, height);
+	const bool calibrated = config.method == DetectionMethod::Calibrated;
+	st = pyramid.build(rgb, stride, width, height, calibrated ? levelNeeded_ : nullptr);
 	if (!st.ok())
 		return st;
 
@@ -144,26 +190,39 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	candidateCount_ = 0;
 	double msClassify = 0;
 	for (int i = 0; i < scales.count; i++) {
+		if (calibrated && !levelNeeded_[i])
+			continue;
 		const LevelChannels level = pyramid.level(i);
 		const auto t0 = Clock::now();
 		const uint64_t room = uint64_t(config.maxCandidates - candidateCount_);
-		const uint64_t passed = classifier.scan(level, hits_.data(), room, &stats.windows);
+		uint64_t passed;
+		if (calibrated) {
+			passed = classifier.scanList(level, plan_.windows(i), plan_.windowCount(i),
+						     hits_.data(), room);
+			stats.windows += plan_.windowCount(i);
+		} else {
+			passed = classifier.scan(level, hits_.data(), room, &stats.windows);
+		}
 		const uint64_t kept = std::min(passed, room);
 		addBoxes(i, hits_.data(), int(kept));
 		stats.candidates += passed;
 		stats.droppedWindows += passed - kept;
 		msClassify += msSince(t0);
-		stats.computedLevels += scales.levels[i].computed ? 1 : 0;
+		stats.levels++;
 	}
-	stats.levels = scales.count;
 
 	const auto tNms = Clock::now();
 	const float overlap = config.disableNms ? INFINITY : params_.nmsOverlap;
 	const bool useUnion = params_.nmsOverlapDenominator == NmsOverlapDenominator::Union;
-	const int kept = nmsGreedy(candidates_.data(), candidateCount_, overlap, useUnion,
-				   order_.data(), sorted_.data());
+	int kept = nmsGreedy(candidates_.data(), candidateCount_, overlap, useUnion, order_.data(),
+			     sorted_.data());
+	if (calibrated && !config.disableNms)
+		kept = suppressByScoreRatio(candidates_.data(), kept, order_.data());
+	if (hasCamera_)
+		addWorldCoordinates(candidates_.data(), kept);
 	stats.msNms = msSince(tNms);
 
+	stats.computedLevels = pyramid.computedCount;
 	stats.msChannels = pyramid.msChannels;
 	stats.msApprox = pyramid.msApprox + pyramid.msSmooth;
 	stats.msClassify = msClassify;

@@ -3,10 +3,12 @@
 // window classifier over every level, NMS. Everything is allocated in init().
 #pragma once
 
+#include <calped/calibration.h>
 #include <calped/detector.h>
 
 #include <vector>
 
+#include "detect/calibrated_plan.h"
 #include "detect/classifier.h"
 #include "kernels.h"
 #include "pyramid/pyramid.h"
@@ -28,9 +30,17 @@ private:
 	Status checkImage(const ImageView &image) const;
 	// Window hits of one level to boxes in input-image pixels, appended to candidates_.
 	void addBoxes(int level, const kernels::WindowHit *hits, int count);
+	Status initCalibrated();
+	// Ground position and world height of the final detections.
+	void addWorldCoordinates(Detection *boxes, int n) const;
 
 	ModelParams params_;
 	int maxWidth_ = 0, maxHeight_ = 0;
+	// Calibrated mode (camera_ is also used in generic mode for world coordinates).
+	bool hasCamera_ = false;
+	CameraModel camera_;
+	CalibratedPlan plan_;
+	bool levelNeeded_[kMaxLevels] = {};
 	// Input resampling ("resize").
 	std::vector<uint8_t> resized_;
 	std::vector<kernels::ResampleTap> resizeX_, resizeY_;

@@ -49,4 +49,33 @@ int nmsGreedy(Detection *boxes, int n, float overlap, bool useUnion, int *order,
 	return kept;
 }
 
+int suppressByScoreRatio(Detection *boxes, int n, int *keep)
+{
+	for (int i = 0; i < n; i++)
+		keep[i] = 1;
+	for (int j = 1; j < n; j++) {
+		const Detection &b = boxes[j];
+		for (int i = 0; i < j && keep[j]; i++) {
+			if (!keep[i])
+				continue;
+			const Detection &a = boxes[i];
+			const float iw = std::min(a.x + a.w, b.x + b.w) - std::max(a.x, b.x);
+			const float ih = std::min(a.y + a.h, b.y + b.h) - std::max(a.y, b.y);
+			if (iw <= 0 || ih <= 0)
+				continue;
+			const float inter = iw * ih;
+			const float iou = inter / (a.w * a.h + b.w * b.h - inter);
+			// Scores may be negative (cascade threshold below 0): then any overlap counts.
+			const float ratio = a.score > 0 ? b.score / a.score : 0.0f;
+			if (iou > ratio)
+				keep[j] = 0;
+		}
+	}
+	int kept = 0;
+	for (int i = 0; i < n; i++)
+		if (keep[i])
+			boxes[kept++] = boxes[i];
+	return kept;
+}
+
 } // namespace calped

@@ -13,4 +13,9 @@ namespace calped {
 // compacted to the front of `boxes` in score order.
 int nmsGreedy(Detection *boxes, int n, float overlap, bool useUnion, int *order, Detection *tmp);
 
+// The thesis's second suppression step (3.3), on boxes sorted by descending score: a box
+// is removed when its overlap (intersection over union) with a kept higher-scoring box
+// exceeds the ratio of their scores. keep is scratch of n ints. Returns the boxes kept.
+int suppressByScoreRatio(Detection *boxes, int n, int *keep);
+
 } // namespace calped

@@ -91,19 +91,39 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 	return Status::success();
 }
 
-Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int height)
+Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
+{
+	if (!computeScales(params_, height, width, out))
+		return Status::error(ErrorCode::InvalidArgument, "too many pyramid levels");
+	if (out.count == 0)
+		return Status::error(ErrorCode::ImageTooSmall,
+				     "%dx%d is smaller than the model's minimum %gx%g", width, height,
+				     double(params_.minDsW), double(params_.minDsH));
+	return Status::success();
+}
+
+Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
+		      const bool *levelNeeded)
 {
 	const auto t0 = Clock::now();
 	if (!luv_[0].fits(width, height))
 		return Status::error(ErrorCode::ImageTooLarge,
 				     "%dx%d is larger than the pyramid was set up for", width, height);
-	if (!computeScales(params_, height, width, scales_))
-		return Status::error(ErrorCode::InvalidArgument, "too many pyramid levels");
-	if (scales_.count == 0)
-		return Status::error(ErrorCode::ImageTooSmall,
-				     "%dx%d is smaller than the model's minimum %gx%g", width, height,
-				     double(params_.minDsW), double(params_.minDsH));
+	Status st = scalesFor(width, height, scales_);
+	if (!st.ok())
+		return st;
 	width_ = width;
+	// Computed levels whose channels some needed level uses, and the last one needed
+	// (the half-size image must exist for every octave below it).
+	bool channelsNeeded[kMaxLevels];
+	int lastNeeded = -1;
+	for (int i = 0; i < scales_.count; i++)
+		channelsNeeded[i] = false;
+	for (int i = 0; i < scales_.count; i++)
+		if (!levelNeeded || levelNeeded[i]) {
+			channelsNeeded[scales_.levels[i].source] = true;
+			lastNeeded = std::max(lastNeeded, scales_.levels[i].source);
+		}
 	height_ = height;
 
 	Plane<uint16_t> luv[3];
@@ -116,9 +136,15 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 	// from the half-size image once that exists (as the toolbox does).
 	Plane<uint16_t> source[3] = { luv[0], luv[1], luv[2] };
 	size_t offset = 0;
+	computedCount = 0;
 	for (int i = 0; i < scales_.count; i++) {
 		const PyramidLevel &l = scales_.levels[i];
-		if (!l.computed)
+		if (!l.computed || i > lastNeeded)
+			continue;
+		const bool isHalf = l.scale == 0.5 && params_.nApprox > 0;
+		// A computed level nobody needs is skipped, unless it is the half-size image
+		// the smaller octaves are resampled from.
+		if (!channelsNeeded[i] && !isHalf)
 			continue;
 		const int w1 = l.width * 4, h1 = l.height * 4;
 		Plane<const uint16_t> in[3];
@@ -126,7 +152,6 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 			for (int c = 0; c < 3; c++)
 				in[c] = { luv[c].data, w1, h1, luv[c].stride };
 		} else {
-			const bool isHalf = l.scale == 0.5 && params_.nApprox > 0;
 			if (!levelLuv_[0].fits(w1, h1) || (isHalf && !halfLuv_[0].fits(w1, h1)))
 				return Status::error(ErrorCode::ImageTooLarge, "level %d does not fit", i);
 			if (!kernels::buildResampleTaps(source[0].width, w1, 1.0, xTaps_.data()) ||
@@ -146,6 +171,8 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 				for (int c = 0; c < 3; c++)
 					source[c] = dst[c];
 		}
+		if (!channelsNeeded[i])
+			continue;
 		const size_t need = size_t(kChannelCount) * l.width * l.height;
 		if (offset + need > realStore_.size())
 			return Status::error(ErrorCode::ImageTooLarge, "channels of level %d do not fit", i);
@@ -154,6 +181,7 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 		planesAt(realStore_.data() + offset, l.width, l.height, out);
 		channels_.compute(in, w1, h1, out);
 		offset += need;
+		computedCount++;
 	}
 	msChannels = msSince(t0);
 	msApprox = 0;

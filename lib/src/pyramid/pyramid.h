@@ -32,8 +32,14 @@ public:
 	Status init(const ModelParams &params, int maxWidth, int maxHeight,
 		    const kernels::KernelTable &k = kernels::bestKernels());
 
-	// Colour conversion and channels of every computed level for one RGB8 image.
-	Status build(const uint8_t *rgb, ptrdiff_t stride, int width, int height);
+	// Colour conversion and channels of the computed levels for one RGB8 image: all of
+	// them, or (levelNeeded non-null, one flag per level of scales()) only those some
+	// needed level is or is approximated from.
+	Status build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
+		     const bool *levelNeeded = nullptr);
+
+	// The scale list build() will use for an image of this size (for setup).
+	Status scalesFor(int width, int height, ScaleList &out) const;
 
 	const ScaleList &scales() const { return scales_; }
 
@@ -45,6 +51,8 @@ public:
 	int padCellsH() const { return padH_; }
 	int padCellsW() const { return padW_; }
 
+	// Levels whose channels the last build() computed.
+	int computedCount = 0;
 	// Time spent in the last build() / level() calls, for FrameStats.
 	double msChannels = 0, msApprox = 0, msSmooth = 0;
 

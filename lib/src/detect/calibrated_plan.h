@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The calibrated mode's setup (thesis 3.1, and the world-height test of 3.2): for one
+// frame size, the pyramid levels and, in each, the windows whose box would hold a person
+// of plausible world height. Computed once per camera and configuration.
+#pragma once
+
+#include <calped/calibration.h>
+#include <calped/model.h>
+#include <calped/status.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "pyramid/scales.h"
+
+namespace calped {
+
+class Classifier;
+
+struct WindowGeometry {
+	double shiftH = 0, shiftW = 0; // window origin to box corner, level pixels
+	double resize = 1;
+};
+
+// The box of window (row, col) of a level, in input-image pixels.
+void windowBox(const ModelParams &p, const PyramidLevel &l, const WindowGeometry &g, int row,
+	       int col, double &x, double &y, double &w, double &h);
+
+// Thesis 3.1: the smallest scale the image needs so that a window of modelHeight pixels
+// holds the tallest person. At both bottom corners of a width x height image (the camera is
+// upright, so people are tallest there), a box grows from modelHeight pixels, one pixel at a
+// time, until its world height reaches maxHeight; the scale is modelHeight over the taller
+// of the two. NaN when neither corner sees the ground.
+double smallestNecessaryScale(const CameraModel &camera, int width, int height,
+			      double modelHeight, double maxHeight);
+
+// Thesis eq. 3.1: 1.0 and every octave below it down to `smallest`, with scalesPerOctave
+// linearly spaced scales per octave (1.0, 0.875, 0.75, 0.625, 0.5, ... for 4). Writes at
+// most capacity scales, returns how many.
+int thesisScaleList(double smallest, int scalesPerOctave, double *out, int capacity);
+
+class CalibratedPlan
+{
+public:
+	// scales: the pyramid of the resized frame; padH, padW: padding in cells.
+	Status build(const CameraModel &camera, const ModelParams &params, const ScaleList &scales,
+		     double resize, int padH, int padW, const Classifier &classifier,
+		     double minHeight, double maxHeight);
+
+	bool levelNeeded(int i) const { return first_[i + 1] > first_[i]; }
+	// Windows of level i, packed row << 16 | column, columns outer (the toolbox's order).
+	const uint32_t *windows(int i) const { return windows_.data() + first_[i]; }
+	size_t windowCount(int i) const { return first_[i + 1] - first_[i]; }
+	size_t totalWindows() const { return windows_.size(); }
+
+private:
+	std::vector<uint32_t> windows_;
+	size_t first_[kMaxLevels + 1] = {};
+};
+
+} // namespace calped

@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Calibrated mode: the thesis's scale selection (3.1) on a synthetic camera, the window
+// plan's world-height test, and calibrated against generic detection on PETS.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include <calped/calped.h>
+
+#include "detect/calibrated_plan.h"
+#include "detect/detector_impl.h"
+#include "synthetic.h"
+#include "test_data.h"
+
+using namespace calped;
+
+namespace {
+
+// A level camera 2 m above the ground looking along +y: a 2 m person is as tall in pixels
+// as the distance from the principal row to their feet.
+CameraModel levelCamera(double f, double cx, double cy)
+{
+	Eigen::Matrix3d K;
+	K << f, 0, cx, 0, f, cy, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0; // camera x = world x, camera y = -world z, camera z = world y
+	const Eigen::Vector3d t(0, 2.0, 0);
+	CameraModel camera;
+	const Status st = CameraModel::fromPinhole(K, R, t, LengthUnit::Metre, camera);
+	EXPECT_TRUE(st.ok()) << st.message();
+	return camera;
+}
+
+} // namespace
+
+TEST(CalibratedScales, ThesisWorkedExample)
+{
+	// 1000x800 image, principal row 465.67: at the bottom row a 2 m person is 333.3 px
+	// tall, so a 100-pixel window needs the image at 100 / 334 = 0.2994 (the thesis's 0.3).
+	const CameraModel camera = levelCamera(1000, 500, 799 - 1000.0 / 3);
+	const double smallest = smallestNecessaryScale(camera, 1000, 800, 100, 2.0);
+	std::printf("smallest necessary scale %.4f\n", smallest);
+	EXPECT_NEAR(smallest, 100.0 / 334, 1e-9);
+	double s[16];
+	const int n = thesisScaleList(smallest, 4, s, 16);
+	const double expected[] = { 1.0, 0.875, 0.75, 0.625, 0.5, 0.4375, 0.375, 0.3125 };
+	ASSERT_EQ(n, 8);
+	for (int i = 0; i < n; i++)
+		EXPECT_DOUBLE_EQ(s[i], expected[i]) << "scale " << i;
+}
+
+TEST(CalibratedScales, NoGroundNoScale)
+{
+	// Looking up at the sky: the bottom corners see no ground.
+	Eigen::Matrix3d K;
+	K << 800, 0, 320, 0, 800, 900, 0, 0, 1; // principal row far below the image
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	EXPECT_TRUE(std::isnan(smallestNecessaryScale(camera, 640, 480, 100, 2.0)));
+}
+
+TEST(CalibratedPlan, EveryPlannedWindowHasAPlausibleHeight)
+{
+	const CameraModel camera = levelCamera(600, 320, 120);
+	DetectorConfig cfg;
+	cfg.maxWidth = 640;
+	cfg.maxHeight = 480;
+	cfg.method = DetectionMethod::Calibrated;
+	cfg.camera = &camera;
+	std::unique_ptr<Detector> det;
+	const Status st = Detector::create(test::randomModel(1), cfg, det);
+	ASSERT_TRUE(st.ok()) << st.message();
+
+	// Rebuild the plan by hand and check both ways on every window of every level.
+	DetectorImpl &impl = det->impl();
+	ScaleList scales;
+	ASSERT_TRUE(impl.pyramid.scalesFor(640, 480, scales).ok());
+	CalibratedPlan plan;
+	ModelParams p;
+	ASSERT_TRUE(plan.build(camera, p, scales, 1.0, impl.pyramid.padCellsH(), impl.pyramid.padCellsW(),
+			       impl.classifier, 1.4, 2.2).ok());
+	WindowGeometry g;
+	g.shiftH = (p.modelDsPadH - double(p.modelDsH)) / 2 - p.padH;
+	g.shiftW = (p.modelDsPadW - double(p.modelDsW)) / 2 - p.padW;
+	size_t planned = 0, all = 0;
+	int levels = 0;
+	for (int i = 0; i < scales.count; i++) {
+		const PyramidLevel &l = scales.levels[i];
+		int rows, cols;
+		impl.classifier.windowGrid(l.height + 2 * impl.pyramid.padCellsH(),
+					   l.width + 2 * impl.pyramid.padCellsW(), rows, cols);
+		std::vector<uint8_t> inPlan(size_t(rows) * cols, 0);
+		for (size_t k = 0; k < plan.windowCount(i); k++) {
+			const uint32_t w = plan.windows(i)[k];
+			inPlan[size_t(w >> 16) * cols + (w & 0xFFFF)] = 1;
+		}
+		for (int r = 0; r < rows; r++)
+			for (int c = 0; c < cols; c++) {
+				double x, y, bw, bh;
+				windowBox(p, l, g, r, c, x, y, bw, bh);
+				const double h = camera.boxWorldHeight(Eigen::Vector2d(x + bw / 2, y + bh),
+								       Eigen::Vector2d(x + bw / 2, y));
+				const bool plausible = h >= 1.4 && h <= 2.2;
+				ASSERT_EQ(plausible, inPlan[size_t(r) * cols + c] == 1)
+					<< "level " << i << " window " << r << "," << c << " height " << h;
+			}
+		planned += plan.windowCount(i);
+		all += size_t(rows) * cols;
+		levels += plan.levelNeeded(i) ? 1 : 0;
+	}
+	std::printf("synthetic level camera 2 m high: %d of %d levels, %zu of %zu windows\n", levels,
+		    scales.count, planned, all);
+	EXPECT_GT(planned, 0u);
+	EXPECT_LT(planned, all / 2);
+}
+
+TEST(CalibratedDetector, RejectsMissingCameraAndOtherFrameSizes)
+{
+	DetectorConfig cfg;
+	cfg.maxWidth = 640;
+	cfg.maxHeight = 480;
+	cfg.method = DetectionMethod::Calibrated;
+	std::unique_ptr<Detector> det;
+	EXPECT_EQ(Detector::create(test::randomModel(1), cfg, det).code(), ErrorCode::InvalidArgument);
+	const CameraModel camera = levelCamera(600, 320, 120);
+	cfg.camera = &camera;
+	cfg.minPersonHeight = 2.5;
+	cfg.maxPersonHeight = 1.0;
+	EXPECT_EQ(Detector::create(test::randomModel(1), cfg, det).code(), ErrorCode::InvalidArgument);
+	cfg.minPersonHeight = 1.4;
+	cfg.maxPersonHeight = 2.2;
+	ASSERT_TRUE(Detector::create(test::randomModel(1), cfg, det).ok());
+	const auto img = test::randomImage(1, 320, 240);
+	Detections d;
+	const Status st = det->detect(ImageView::rgb8(img.data(), 320, 240), d);
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("640x480"), std::string::npos) << st.message();
+}
+
+TEST(CalibratedDetector, PetsFewerWindowsSameDetections)
+{
+	const std::string shared = test::sharedDir();
+	const std::string blobPath = test::inriaModelBlob();
+	if (shared.empty() || blobPath.empty() || test::petsFrame(10).empty())
+		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
+	std::vector<uint8_t> blob, xml;
+	ASSERT_TRUE(test::readFile(blobPath, blob));
+	ASSERT_TRUE(test::readFile(shared + "/data/pets2009-s2l1/View_001.xml", xml));
+	Model model;
+	ASSERT_TRUE(loadModel(blob.data(), blob.size(), model).ok());
+	CameraModel camera;
+	ASSERT_TRUE(loadCalibration(reinterpret_cast<const char *>(xml.data()), xml.size(), "View_001.xml", camera).ok());
+
+	std::unique_ptr<Detector> generic, calibrated;
+	DetectorConfig cfg;
+	cfg.maxWidth = 768;
+	cfg.maxHeight = 576;
+	cfg.resize = 2.0;
+	cfg.camera = &camera;
+	ASSERT_TRUE(Detector::create(model, cfg, generic).ok());
+	cfg.method = DetectionMethod::Calibrated;
+	ASSERT_TRUE(Detector::create(model, cfg, calibrated).ok());
+
+	uint64_t windowsGeneric = 0, windowsCalibrated = 0;
+	int strong = 0, kept = 0, levelsG = 0, levelsC = 0;
+	for (int k = 1; k <= 10; k++) {
+		test::RgbImage img;
+		ASSERT_TRUE(test::loadRgb(test::petsFrame(k), img));
+		const ImageView v = ImageView::rgb8(img.pixels.data(), img.width, img.height);
+		Detections dg, dc;
+		ASSERT_TRUE(generic->detect(v, dg).ok());
+		std::vector<Detection> g(dg.begin(), dg.end());
+		windowsGeneric += generic->lastStats().windows;
+		levelsG = generic->lastStats().levels;
+		ASSERT_TRUE(calibrated->detect(v, dc).ok());
+		windowsCalibrated += calibrated->lastStats().windows;
+		levelsC = calibrated->lastStats().levels;
+		for (const Detection &c : dc) {
+			EXPECT_GE(c.worldHeight, 1.4f - 1e-3f);
+			EXPECT_LE(c.worldHeight, 2.2f + 1e-3f);
+			EXPECT_TRUE(std::isfinite(c.groundX) && std::isfinite(c.groundY));
+		}
+		// Every strong generic detection of plausible height is still found.
+		for (const Detection &a : g) {
+			if (a.score < 30 || !(a.worldHeight >= 1.45f && a.worldHeight <= 2.15f))
+				continue;
+			strong++;
+			for (const Detection &c : dc)
+				if (std::fabs(c.x - a.x) < 1 && std::fabs(c.y - a.y) < 1 && std::fabs(c.h - a.h) < 1) {
+					kept++;
+					break;
+				}
+		}
+	}
+	std::printf("PETS frames 1-10, resize 2: generic %d levels %.0f windows/frame, calibrated %d levels "
+		    "%.0f windows/frame; strong plausible generic detections kept %d of %d\n",
+		    levelsG, windowsGeneric / 10.0, levelsC, windowsCalibrated / 10.0, kept, strong);
+	EXPECT_LT(levelsC, levelsG);
+	EXPECT_LT(windowsCalibrated * 3, windowsGeneric);
+	EXPECT_GT(strong, 0);
+	EXPECT_GE(kept, strong * 9 / 10);
+}
