@@ -42,6 +42,14 @@ struct DetectorConfig {
 	// Plausible pedestrian heights, metres (calibrated mode).
 	double minPersonHeight = 1.4;
 	double maxPersonHeight = 2.2;
+	// Thesis 3.2: a sparse grid of windows first, then every window in dense regions around
+	// its detections. false evaluates every plausible window instead.
+	bool sparseDense = true;
+	// Thesis 3.4: a dense region is removed after this many frames in a row without a
+	// detection inside (1 reproduces the thesis).
+	int denseRegionPersistence = 1;
+	// Capacity for dense regions; regions beyond it are not created, and counted.
+	int maxDenseRegions = 256;
 };
 
 // One detection in input-image pixels: top-left corner, size, classifier score. With a
@@ -60,6 +68,11 @@ struct FrameStats {
 	uint64_t windows = 0;    // classifier windows evaluated (CApF)
 	uint64_t candidates = 0; // windows that passed the cascade
 	uint64_t droppedWindows = 0;
+	// Calibrated mode: windows of the sparse grid and of dense regions, regions alive after
+	// this frame, regions not created for lack of capacity (since create()).
+	uint64_t sparseWindows = 0, denseWindows = 0;
+	int denseRegions = 0;
+	uint64_t droppedRegions = 0;
 	double msResize = 0, msChannels = 0, msApprox = 0, msClassify = 0, msNms = 0, msTotal = 0;
 };
 

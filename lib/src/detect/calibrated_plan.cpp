@@ -66,31 +66,81 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 	g.shiftH = (params.modelDsPadH - double(params.modelDsH)) / 2 - params.padH;
 	g.shiftW = (params.modelDsPadW - double(params.modelDsW)) / 2 - params.padW;
 	g.resize = resize;
+	params_ = params;
+	geometry_ = g;
+	scales_ = scales;
+	// Half a box, in window steps (cells of the level).
+	const int sparseRows = std::max(1, int(std::lround(params.modelDsH / 2 / params.stride)));
+	const int sparseCols = std::max(1, int(std::lround(params.modelDsW / 2 / params.stride)));
 	try {
 		windows_.clear();
+		sparse_.clear();
+		plausible_.clear();
 		for (int i = 0; i < scales.count; i++) {
 			first_[i] = windows_.size();
+			sparseFirst_[i] = sparse_.size();
+			gridFirst_[i] = plausible_.size();
 			const PyramidLevel &l = scales.levels[i];
 			int rows, cols;
 			classifier.windowGrid(l.height + 2 * padH, l.width + 2 * padW, rows, cols);
 			if (rows > 65535 || cols > 65535)
 				return Status::error(ErrorCode::InvalidArgument, "level %d too large", i);
+			rows_[i] = rows;
+			cols_[i] = cols;
+			plausible_.resize(plausible_.size() + size_t(rows) * cols, 0);
+			uint8_t *grid = plausible_.data() + gridFirst_[i];
 			for (int c = 0; c < cols; c++)
 				for (int r = 0; r < rows; r++) {
 					double x, y, w, h;
 					windowBox(params, l, g, r, c, x, y, w, h);
 					const Eigen::Vector2d foot(x + w / 2, y + h), head(x + w / 2, y);
 					const double height = camera.boxWorldHeight(foot, head);
-					if (height >= minHeight && height <= maxHeight)
-						windows_.push_back(uint32_t(r) << 16 | uint32_t(c));
+					if (!(height >= minHeight && height <= maxHeight))
+						continue;
+					const uint32_t packed = uint32_t(r) << 16 | uint32_t(c);
+					windows_.push_back(packed);
+					grid[size_t(r) * cols + c] = 1;
+					if (r % sparseRows == 0 && c % sparseCols == 0)
+						sparse_.push_back(packed);
 				}
 		}
 		first_[scales.count] = windows_.size();
+		sparseFirst_[scales.count] = sparse_.size();
+		gridFirst_[scales.count] = plausible_.size();
 		windows_.shrink_to_fit();
+		sparse_.shrink_to_fit();
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory, "calibrated window lists");
 	}
 	return Status::success();
+}
+
+size_t CalibratedPlan::largestLevelWindows() const
+{
+	size_t most = 0;
+	for (int i = 0; i < scales_.count; i++)
+		most = std::max(most, windowCount(i));
+	return most;
+}
+
+bool CalibratedPlan::windowsInside(int i, float x0, float y0, float x1, float y1, int &r0,
+				   int &r1, int &c0, int &c1) const
+{
+	const PyramidLevel &l = scales_.levels[i];
+	const double w = params_.modelDsW / l.scale / geometry_.resize;
+	const double h = params_.modelDsH / l.scale / geometry_.resize;
+	// Boxes whose centre lies in the rectangle. Inverting windowBox,
+	// x = (c * stride + shiftW) / scaleW / resize, for x + w/2 in [x0, x1].
+	const double kx = l.scaleW * geometry_.resize, ky = l.scaleH * geometry_.resize;
+	c0 = int(std::ceil(((x0 - w / 2) * kx - geometry_.shiftW) / params_.stride));
+	c1 = int(std::floor(((x1 - w / 2) * kx - geometry_.shiftW) / params_.stride));
+	r0 = int(std::ceil(((y0 - h / 2) * ky - geometry_.shiftH) / params_.stride));
+	r1 = int(std::floor(((y1 - h / 2) * ky - geometry_.shiftH) / params_.stride));
+	c0 = std::max(c0, 0);
+	r0 = std::max(r0, 0);
+	c1 = std::min(c1, cols_[i] - 1);
+	r1 = std::min(r1, rows_[i] - 1);
+	return c0 <= c1 && r0 <= r1;
 }
 
 } // namespace calped

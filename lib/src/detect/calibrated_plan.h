@@ -52,10 +52,37 @@ public:
 	const uint32_t *windows(int i) const { return windows_.data() + first_[i]; }
 	size_t windowCount(int i) const { return first_[i + 1] - first_[i]; }
 	size_t totalWindows() const { return windows_.size(); }
+	size_t largestLevelWindows() const;
+
+	// Thesis 3.2.1: the sparse windows of level i, a grid stepping half a box across and
+	// down (so neighbours share half their area), of the plausible ones.
+	const uint32_t *sparseWindows(int i) const { return sparse_.data() + sparseFirst_[i]; }
+	size_t sparseCount(int i) const { return sparseFirst_[i + 1] - sparseFirst_[i]; }
+
+	// Window grid of level i and whether window (row, col) is plausible.
+	int rows(int i) const { return rows_[i]; }
+	int cols(int i) const { return cols_[i]; }
+	bool plausible(int i, int row, int col) const
+	{
+		return plausible_[gridFirst_[i] + size_t(row) * cols_[i] + col] != 0;
+	}
+	size_t gridSize() const { return plausible_.size(); }
+	size_t gridFirst(int i) const { return gridFirst_[i]; }
+
+	// The window rows and columns of level i whose box centre lies in the input-image
+	// rectangle [x0, x1] x [y0, y1]; false if none.
+	bool windowsInside(int i, float x0, float y0, float x1, float y1, int &r0, int &r1, int &c0,
+			   int &c1) const;
 
 private:
-	std::vector<uint32_t> windows_;
-	size_t first_[kMaxLevels + 1] = {};
+	ModelParams params_;
+	WindowGeometry geometry_;
+	ScaleList scales_;
+	std::vector<uint32_t> windows_, sparse_;
+	std::vector<uint8_t> plausible_;
+	size_t first_[kMaxLevels + 1] = {}, sparseFirst_[kMaxLevels + 1] = {};
+	size_t gridFirst_[kMaxLevels + 1] = {};
+	int rows_[kMaxLevels] = {}, cols_[kMaxLevels] = {};
 };
 
 } // namespace calped

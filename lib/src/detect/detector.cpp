@@ -94,7 +94,101 @@ Status DetectorImpl::initCalibrated()
 		return st;
 	for (int i = 0; i < scales.count; i++)
 		levelNeeded_[i] = plan_.levelNeeded(i);
+	if (config.denseRegionPersistence < 1 || config.maxDenseRegions < 1)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "dense region persistence %d and capacity %d must be >= 1",
+				     config.denseRegionPersistence, config.maxDenseRegions);
+	try {
+		regions_.init(config.maxDenseRegions, config.denseRegionPersistence);
+		evaluated_.assign(plan_.gridSize(), 0);
+		frameList_.assign(plan_.largestLevelWindows() + 1, 0);
+	} catch (const std::bad_alloc &) {
+		return Status::error(ErrorCode::OutOfMemory, "calibrated mode buffers");
+	}
 	return Status::success();
+}
+
+double DetectorImpl::classifyList(int i, const LevelChannels &channels, const uint32_t *windows,
+				  size_t count)
+{
+	const auto t0 = Clock::now();
+	const uint64_t room = uint64_t(config.maxCandidates - candidateCount_);
+	const uint64_t passed = classifier.scanList(channels, windows, count, hits_.data(), room);
+	const uint64_t kept = std::min(passed, room);
+	addBoxes(i, hits_.data(), int(kept));
+	stats.windows += count;
+	stats.candidates += passed;
+	stats.droppedWindows += passed - kept;
+	return msSince(t0);
+}
+
+size_t DetectorImpl::collectDense(int i, const DenseRegion &region, size_t n)
+{
+	int r0, r1, c0, c1;
+	if (!plan_.windowsInside(i, region.x0, region.y0, region.x1, region.y1, r0, r1, c0, c1))
+		return n;
+	uint8_t *done = evaluated_.data() + plan_.gridFirst(i);
+	const int cols = plan_.cols(i);
+	for (int c = c0; c <= c1; c++)
+		for (int r = r0; r <= r1; r++) {
+			const size_t k = size_t(r) * cols + c;
+			if (done[k] || !plan_.plausible(i, r, c))
+				continue;
+			done[k] = 1;
+			frameList_[n++] = uint32_t(r) << 16 | uint32_t(c);
+		}
+	return n;
+}
+
+double DetectorImpl::classifySparseDense()
+{
+	const ScaleList &scales = pyramid.scales();
+	std::fill(evaluated_.begin(), evaluated_.end(), uint8_t(0));
+	double ms = 0;
+	// Pass 1, every level: the sparse grid and the regions kept from earlier frames.
+	const int oldRegions = regions_.count();
+	for (int i = 0; i < scales.count; i++) {
+		if (!levelNeeded_[i])
+			continue;
+		uint8_t *done = evaluated_.data() + plan_.gridFirst(i);
+		size_t n = 0;
+		const uint32_t *sparse = plan_.sparseWindows(i);
+		for (size_t k = 0; k < plan_.sparseCount(i); k++) {
+			done[size_t(sparse[k] >> 16) * plan_.cols(i) + (sparse[k] & 0xFFFF)] = 1;
+			frameList_[n++] = sparse[k];
+		}
+		const size_t sparseN = n;
+		for (int r = 0; r < oldRegions; r++)
+			n = collectDense(i, regions_[r], n);
+		stats.sparseWindows += sparseN;
+		stats.denseWindows += n - sparseN;
+		ms += classifyList(i, pyramid.level(i), frameList_.data(), n);
+		stats.levels++;
+	}
+	// New regions around the detections outside the existing ones, best first.
+	const int found = candidateCount_;
+	for (int k = 0; k < found; k++)
+		order_[k] = k;
+	std::sort(order_.begin(), order_.begin() + found, [this](int a, int b) {
+		if (candidates_[a].score != candidates_[b].score)
+			return candidates_[a].score > candidates_[b].score;
+		return a < b;
+	});
+	for (int k = 0; k < found; k++)
+		regions_.addAround(candidates_[order_[k]]);
+	// Pass 2: the new regions' windows, on the levels that have any.
+	for (int i = 0; i < scales.count && regions_.count() > oldRegions; i++) {
+		if (!levelNeeded_[i])
+			continue;
+		size_t n = 0;
+		for (int r = oldRegions; r < regions_.count(); r++)
+			n = collectDense(i, regions_[r], n);
+		if (n == 0)
+			continue;
+		stats.denseWindows += n;
+		ms += classifyList(i, pyramid.level(i), frameList_.data(), n);
+	}
+	return ms;
 }
 
 void DetectorImpl::addWorldCoordinates(Detection *boxes, int n) const
@@ -189,7 +283,10 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	const ScaleList &scales = pyramid.scales();
 	candidateCount_ = 0;
 	double msClassify = 0;
-	for (int i = 0; i < scales.count; i++) {
+	const bool sparseDense = calibrated && config.sparseDense;
+	if (sparseDense)
+		msClassify = classifySparseDense();
+	for (int i = 0; i < scales.count && !sparseDense; i++) {
 		if (calibrated && !levelNeeded_[i])
 			continue;
 		const LevelChannels level = pyramid.level(i);
@@ -220,6 +317,11 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 		kept = suppressByScoreRatio(candidates_.data(), kept, order_.data());
 	if (hasCamera_)
 		addWorldCoordinates(candidates_.data(), kept);
+	if (sparseDense) {
+		regions_.update(candidates_.data(), kept);
+		stats.denseRegions = regions_.count();
+		stats.droppedRegions = regions_.dropped();
+	}
 	stats.msNms = msSince(tNms);
 
 	stats.computedLevels = pyramid.computedCount;

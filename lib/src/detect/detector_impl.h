@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "detect/calibrated_plan.h"
+#include "detect/dense_regions.h"
 #include "detect/classifier.h"
 #include "kernels.h"
 #include "pyramid/pyramid.h"
@@ -31,6 +32,13 @@ private:
 	// Window hits of one level to boxes in input-image pixels, appended to candidates_.
 	void addBoxes(int level, const kernels::WindowHit *hits, int count);
 	Status initCalibrated();
+	// Classify the listed windows of one level and keep the hits; returns ms spent.
+	double classifyList(int level, const LevelChannels &channels, const uint32_t *windows,
+			    size_t count);
+	// Thesis 3.2: sparse grid and existing dense regions, new regions, their windows.
+	double classifySparseDense();
+	// Windows of level i inside region r not evaluated yet, appended to frameList_.
+	size_t collectDense(int i, const DenseRegion &r, size_t n);
 	// Ground position and world height of the final detections.
 	void addWorldCoordinates(Detection *boxes, int n) const;
 
@@ -41,6 +49,9 @@ private:
 	CameraModel camera_;
 	CalibratedPlan plan_;
 	bool levelNeeded_[kMaxLevels] = {};
+	DenseRegions regions_;
+	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
+	std::vector<uint32_t> frameList_;
 	// Input resampling ("resize").
 	std::vector<uint8_t> resized_;
 	std::vector<kernels::ResampleTap> resizeX_, resizeY_;
