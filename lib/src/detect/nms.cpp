@@ -5,6 +5,28 @@
 
 namespace calped {
 
+namespace {
+
+// Area of the intersection of two boxes (0 when they do not overlap).
+float intersection(const Detection &a, const Detection &b)
+{
+	const float iw = std::min(a.x + a.w, b.x + b.w) - std::max(a.x, b.x);
+	const float ih = std::min(a.y + a.h, b.y + b.h) - std::max(a.y, b.y);
+	return iw > 0 && ih > 0 ? iw * ih : 0.0f;
+}
+
+// Keeps the boxes marked in keep[], in order, at the front of out.
+int compact(const Detection *boxes, const int *keep, int n, Detection *out)
+{
+	int kept = 0;
+	for (int i = 0; i < n; i++)
+		if (keep[i])
+			out[kept++] = boxes[i];
+	return kept;
+}
+
+} // namespace
+
 int nmsGreedy(Detection *boxes, int n, float overlap, bool useUnion, int *order, Detection *tmp)
 {
 	// Sort by score, descending; the index breaks ties so the result is the stable order.
@@ -30,23 +52,16 @@ int nmsGreedy(Detection *boxes, int n, float overlap, bool useUnion, int *order,
 			if (!order[j])
 				continue;
 			const Detection &b = tmp[j];
-			const float iw = std::min(a.x + a.w, b.x + b.w) - std::max(a.x, b.x);
-			if (iw <= 0)
+			const float inter = intersection(a, b);
+			if (inter <= 0)
 				continue;
-			const float ih = std::min(a.y + a.h, b.y + b.h) - std::max(a.y, b.y);
-			if (ih <= 0)
-				continue;
-			const float inter = iw * ih, bArea = b.w * b.h;
+			const float bArea = b.w * b.h;
 			const float denom = useUnion ? aArea + bArea - inter : std::min(aArea, bArea);
 			if (inter / denom > overlap)
 				order[j] = 0;
 		}
 	}
-	int kept = 0;
-	for (int i = 0; i < n; i++)
-		if (order[i])
-			boxes[kept++] = tmp[i];
-	return kept;
+	return compact(tmp, order, n, boxes);
 }
 
 int suppressByScoreRatio(Detection *boxes, int n, int *keep)
@@ -59,11 +74,9 @@ int suppressByScoreRatio(Detection *boxes, int n, int *keep)
 			if (!keep[i])
 				continue;
 			const Detection &a = boxes[i];
-			const float iw = std::min(a.x + a.w, b.x + b.w) - std::max(a.x, b.x);
-			const float ih = std::min(a.y + a.h, b.y + b.h) - std::max(a.y, b.y);
-			if (iw <= 0 || ih <= 0)
+			const float inter = intersection(a, b);
+			if (inter <= 0)
 				continue;
-			const float inter = iw * ih;
 			const float iou = inter / (a.w * a.h + b.w * b.h - inter);
 			// Scores may be negative (cascade threshold below 0): then any overlap counts.
 			const float ratio = a.score > 0 ? b.score / a.score : 0.0f;
@@ -71,11 +84,7 @@ int suppressByScoreRatio(Detection *boxes, int n, int *keep)
 				keep[j] = 0;
 		}
 	}
-	int kept = 0;
-	for (int i = 0; i < n; i++)
-		if (keep[i])
-			boxes[kept++] = boxes[i];
-	return kept;
+	return compact(boxes, keep, n, boxes);
 }
 
 } // namespace calped
