@@ -35,8 +35,9 @@ struct DetectorConfig {
 	// Skip non-maximum suppression (returns every window that passed the cascade).
 	bool disableNms = false;
 
-	// Calibrated mode. The camera is copied by create(); its pixels are the input frame's
-	// (before resize), and every frame must then be exactly maxWidth x maxHeight.
+	// A camera (copied by create()) gives detections their ground position and world
+	// height, and is required by calibrated mode. Its pixels are the input frame's (before
+	// resize): every frame must then be exactly maxWidth x maxHeight.
 	DetectionMethod method = DetectionMethod::Generic;
 	const CameraModel *camera = nullptr;
 	// Plausible pedestrian heights, metres (calibrated mode).

@@ -65,6 +65,13 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 			camera_ = *cfg.camera;
 			hasCamera_ = true;
 		}
+		// The calibration's pixels must be the frames' (a Tsai file states its size).
+		if (hasCamera_ && camera_.imageWidth() > 0 &&
+		    (camera_.imageWidth() != cfg.maxWidth || camera_.imageHeight() != cfg.maxHeight))
+			return Status::error(ErrorCode::InvalidArgument,
+					     "the calibration is for %dx%d images, the detector for %dx%d",
+					     camera_.imageWidth(), camera_.imageHeight(), cfg.maxWidth,
+					     cfg.maxHeight);
 		hits_.resize(cfg.maxCandidates);
 		candidates_.resize(cfg.maxCandidates);
 		sorted_.resize(cfg.maxCandidates);
@@ -221,10 +228,10 @@ Status DetectorImpl::checkImage(const ImageView &image) const
 		return Status::error(ErrorCode::ImageTooLarge,
 				     "image %dx%d exceeds the configured maximum %dx%d", image.width,
 				     image.height, config.maxWidth, config.maxHeight);
-	if (config.method == DetectionMethod::Calibrated &&
-	    (image.width != config.maxWidth || image.height != config.maxHeight))
+	// World coordinates (and the calibrated plan) hold for the calibration's frame size.
+	if (hasCamera_ && (image.width != config.maxWidth || image.height != config.maxHeight))
 		return Status::error(ErrorCode::InvalidArgument,
-				     "calibrated mode is set up for %dx%d frames, got %dx%d",
+				     "with a calibration the detector takes %dx%d frames, got %dx%d",
 				     config.maxWidth, config.maxHeight, image.width, image.height);
 	return Status::success();
 }
