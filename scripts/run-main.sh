@@ -5,12 +5,20 @@
 #   out/main/frames.jsonl     one line per frame with the detector's time
 #   out/main/overlays/        every 100th frame with the detections drawn
 #   out/main/summary.txt      the table printed at the end
+# Then the evaluation (docs/evaluation.md): calped-eval runs the generic and calibrated
+# methods at resizes 1.5, 2.0 and 2.5 against the ground truth and writes
+#   docs/results.md           tables, plots and sample frames, machine, date and commit
+#   docs/results/             the plots and overlays it links
+#   out/main/eval.json        one object per (method, resize); out/main/dets/ their CSVs
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 start=$SECONDS
+# CALPED_BUILD_DIR picks another build folder (setup-models.sh reads it too).
+builddir=${CALPED_BUILD_DIR:-build}
+export CALPED_BUILD_DIR=$builddir
 bash scripts/install-deps.sh
-bash scripts/build.sh build -Dbuildtype=release
+bash scripts/build.sh "$builddir" -Dbuildtype=release
 bash scripts/setup-models.sh
 bash scripts/fetch-pets.sh
 
@@ -21,7 +29,7 @@ resize=2
 rm -rf "$out"
 mkdir -p "$out"
 
-cmd=(build/tools/detect/calped-detect --model "$model" --resize "$resize"
+cmd=("$builddir"/tools/detect/calped-detect --model "$model" --resize "$resize"
 	--csv "$out/detections.csv" --jsonl "$out/frames.jsonl"
 	--overlay "$out/overlays" --overlay-every 100 "$frames")
 echo "run-main: ${cmd[*]}"
@@ -50,3 +58,62 @@ field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$summary"; }
 		"overlays" "$out/overlays/ ($(find "$out/overlays" -name '*.png' | wc -l) images)" \
 		"log" "$out/detect.log"
 } | tee "$out/summary.txt"
+
+# --- Evaluation -------------------------------------------------------------------------
+# Both modes; the calibrated one uses PETS view 1's Tsai calibration (calped-eval names and
+# skips it if that file is missing).
+eval_start=$SECONDS
+pets=${CALPED_SHARED_DIR:-../shared}/data/pets2009-s2l1
+gt=$pets/PETS2009-S2L1.xml
+calib=()
+if [[ -f $pets/View_001.xml ]]; then
+	calib=(--calib "$pets/View_001.xml")
+fi
+# The same frames as above, decoded by an ffmpeg pipe: identical pixels (ffmpeg made the PNGs)
+# for about 5 ms a frame where reading the PNGs back takes about 12, six runs over.
+input=(--frames "$frames")
+if [[ -s data/pets/vtest.avi ]]; then
+	input=(--video data/pets/vtest.avi)
+fi
+results=docs/results
+page=docs/results.md
+# Each (method, resize) runs in its own process, one at a time by default: runs side by side
+# share caches, memory bandwidth and (on small VMs) CPU time, and the ms/frame the table
+# reports grows with them. CALPED_EVAL_JOBS=N trades that for wall time.
+eval_jobs=${CALPED_EVAL_JOBS:-1}
+mkdir -p "$results" "$out/plots"
+find "$results" -maxdepth 1 -type f -name '*.png' -delete
+ecmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
+	--methods generic,calibrated --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
+	--json "$out/eval.json" --dets "$out/dets" --plots "$results" --overlays "$results"
+	--overlay-frames 1,200,400,600 --markdown "$page.part")
+echo "run-main: ${ecmd[*]}"
+"${ecmd[@]}" | tee "$out/eval.txt"
+# The plots' data and gnuplot scripts are for redrawing, not for reading: keep them in out/.
+find "$results" -maxdepth 1 -type f \( -name '*.dat' -o -name '*.gp' \) -exec mv -t "$out/plots" {} +
+eval_wall=$((SECONDS - eval_start))
+
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [[ $commit != unknown ]] && ! git diff --quiet HEAD 2>/dev/null; then
+	commit="$commit (with uncommitted changes)"
+fi
+cpu=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
+{
+	echo "<!-- SPDX-License-Identifier: BSD-2-Clause -->"
+	echo "# Results: PETS 2009 S2L1"
+	echo
+	echo "Written by \`bash scripts/run-main.sh\` (do not edit by hand) on $(date -u '+%Y-%m-%d %H:%M UTC'),"
+	echo "commit \`$commit\`, on ${cpu:-an unknown CPU} with $(nproc) cores; runs at a time: $eval_jobs, each"
+	echo "on one thread. calped-eval took $eval_wall s of wall time for all its runs over all frames."
+	echo
+	cat "$page.part"
+} >"$page"
+rm -f "$page.part"
+
+{
+	echo
+	echo "evaluation (calped-eval, $eval_wall s wall time, runs at a time: $eval_jobs): $page, $out/eval.json"
+	cat "$out/eval.txt"
+	echo
+	echo "main job wall time: $((SECONDS - start)) s"
+} | tee -a "$out/summary.txt"

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Detection CSV round trip and errors, and the bytes a run's process sends back.
+#include <cstdio>
+#include <string>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "dets_csv.h"
+#include "runner.h"
+#include "test_paths.h"
+
+namespace calped::eval_tool {
+namespace {
+
+std::string tempPath(const std::string &name)
+{
+	return test::envOr("CALPED_BUILD_DIR", ".") + "/eval-test-" + std::to_string(getpid()) + "-" + name;
+}
+
+TEST(DetectionsCsv, RoundTripIsExact)
+{
+	SequenceDetections d(3);
+	d[0].push_back({ Box{ 499.27710843f, 155.55f, 31.5966926f, 77.0651f }, 100.76113891f });
+	d[2].push_back({ Box{ -3.25f, 0.1f, 40, 98.5f }, -0.5f });
+	d[2].push_back({ Box{ 1e-3f, 1e4f, 1.0f / 3.0f, 2.0f / 7.0f }, 1.0f / 65536.0f });
+	const std::string path = tempPath("roundtrip.csv");
+	std::string error;
+	ASSERT_TRUE(writeDetectionsCsv(path, d, error)) << error;
+	SequenceDetections back;
+	ASSERT_TRUE(readDetectionsCsv(path, 3, back, error)) << error;
+	std::remove(path.c_str());
+	ASSERT_EQ(back.size(), 3u); // frame 2 has no rows; frame 3 sets the size
+	EXPECT_TRUE(back[1].empty());
+	ASSERT_EQ(back[2].size(), 2u);
+	for (size_t f = 0; f < 3; f++) {
+		for (size_t i = 0; i < d[f].size(); i++) {
+			EXPECT_EQ(back[f][i].box.x, d[f][i].box.x);
+			EXPECT_EQ(back[f][i].box.y, d[f][i].box.y);
+			EXPECT_EQ(back[f][i].box.w, d[f][i].box.w);
+			EXPECT_EQ(back[f][i].box.h, d[f][i].box.h);
+			EXPECT_EQ(back[f][i].score, d[f][i].score);
+		}
+	}
+}
+
+TEST(DetectionsCsv, DetectorFloatsGiveShortNumbers)
+{
+	EXPECT_EQ(shortestDecimal(floatAsDecimal(155.55f)), "155.550003");
+	EXPECT_EQ(shortestDecimal(floatAsDecimal(2.0f)), "2");
+	EXPECT_EQ(shortestDecimal(0.1), "0.1");
+}
+
+TEST(DetectionsCsv, FramesBeyondTheScoredOnesAreAnError)
+{
+	SequenceDetections d(5);
+	d[4].push_back({ Box{ 1, 2, 3, 4 }, 5 });
+	const std::string path = tempPath("beyond.csv");
+	std::string error;
+	ASSERT_TRUE(writeDetectionsCsv(path, d, error)) << error;
+	SequenceDetections back;
+	EXPECT_FALSE(readDetectionsCsv(path, 4, back, error));
+	std::remove(path.c_str());
+	EXPECT_NE(error.find(path + ":2: frame 5 is beyond the 4 frames scored"), std::string::npos)
+		<< error;
+}
+
+TEST(DetectionsCsv, MalformedFilesNameFileAndLine)
+{
+	SequenceDetections d;
+	std::string error;
+	const std::string header = test::dataPath("dets_bad_header.csv");
+	EXPECT_FALSE(readDetectionsCsv(header, 0, d, error));
+	EXPECT_EQ(error.rfind(header + ":1: ", 0), 0u) << error;
+	const std::string row = test::dataPath("dets_bad_row.csv");
+	EXPECT_FALSE(readDetectionsCsv(row, 0, d, error));
+	EXPECT_EQ(error.rfind(row + ":3: expected 6 comma-separated fields", 0), 0u) << error;
+}
+
+TEST(RunBytes, EncodeDecodeRoundTrip)
+{
+	RunResult run;
+	run.frames = 3;
+	run.counters.frames = 3;
+	run.counters.levelsMin = 29;
+	run.counters.windowsMean = 570135;
+	run.counters.peakRssKib = 12345;
+	run.detections.resize(3);
+	run.detections[1].push_back({ Box{ 1, 2, 3, 4 }, 5 });
+	RunResult back;
+	std::string error;
+	ASSERT_TRUE(decodeRun(encodeRun(run), back, error)) << error;
+	EXPECT_EQ(back.frames, 3);
+	EXPECT_EQ(back.counters.levelsMin, 29);
+	EXPECT_EQ(back.counters.windowsMean, 570135);
+	EXPECT_EQ(back.counters.peakRssKib, 12345);
+	ASSERT_EQ(back.detections.size(), 3u);
+	ASSERT_EQ(back.detections[1].size(), 1u);
+	EXPECT_EQ(back.detections[1][0].score, 5);
+
+	std::vector<unsigned char> bytes = encodeRun(run);
+	bytes.resize(bytes.size() - 1);
+	EXPECT_FALSE(decodeRun(bytes, back, error));
+	EXPECT_FALSE(decodeRun({}, back, error));
+}
+
+} // namespace
+} // namespace calped::eval_tool

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Both ground-truth readers on small files, including malformed ones: every error must
+// name the file and the line.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "ground_truth.h"
+#include "test_paths.h"
+
+namespace calped::eval_tool {
+namespace {
+
+using test::dataPath;
+
+// Loads a file that must fail and checks the message starts "PATH:LINE: " and mentions `what`.
+void expectLineError(const std::string &name, long line, const std::string &what)
+{
+	const std::string path = dataPath(name);
+	GroundTruth gt;
+	std::string error;
+	EXPECT_FALSE(loadGroundTruth(path, gt, error)) << name;
+	EXPECT_EQ(error.rfind(path + ":" + std::to_string(line) + ": ", 0), 0u)
+		<< "error for " << name << ": " << error;
+	EXPECT_NE(error.find(what), std::string::npos) << "error for " << name << ": " << error;
+	EXPECT_EQ(gt.lastFrame(), 0) << "a failed read leaves no boxes";
+}
+
+TEST(CvmlReader, ReadsBoxesAndNumbersFramesFromOne)
+{
+	if (!cvmlSupported())
+		GTEST_SKIP() << "built without expat";
+	GroundTruth gt;
+	std::string error;
+	ASSERT_TRUE(loadGroundTruth(dataPath("cvml_small.xml"), gt, error)) << error;
+	EXPECT_EQ(gt.lastFrame(), 4); // CVML frame 3 is our frame 4
+	ASSERT_EQ(gt.boxes(1).size(), 2u);
+	EXPECT_TRUE(gt.boxes(2).empty());
+	EXPECT_TRUE(gt.boxes(3).empty());
+	ASSERT_EQ(gt.boxes(4).size(), 1u);
+	// Centre and size -> corner and size.
+	const Box &b = gt.boxes(1)[0].box;
+	EXPECT_DOUBLE_EQ(b.x, 100);
+	EXPECT_DOUBLE_EQ(b.y, 200);
+	EXPECT_DOUBLE_EQ(b.w, 30);
+	EXPECT_DOUBLE_EQ(b.h, 80);
+	EXPECT_DOUBLE_EQ(gt.boxes(1)[1].box.w, 33.25);
+	EXPECT_DOUBLE_EQ(gt.boxes(4)[0].box.x, 0);
+	EXPECT_FALSE(gt.boxes(1)[0].ignore);
+	EXPECT_EQ(gt.count(4, false), 3);
+	EXPECT_EQ(gt.count(1, false), 2);
+}
+
+TEST(CvmlReader, MalformedFilesNameFileAndLine)
+{
+	if (!cvmlSupported())
+		GTEST_SKIP() << "built without expat";
+	expectLineError("cvml_syntax_error.xml", 7, "malformed XML");
+	expectLineError("cvml_missing_width.xml", 9, "lacks attribute \"w\"");
+	expectLineError("cvml_bad_number.xml", 6, "w=\"3O\" is not a number");
+	expectLineError("cvml_duplicate_frame.xml", 6, "first at line 3");
+	expectLineError("cvml_box_outside_object.xml", 4, "<box> outside an <object>");
+	expectLineError("cvml_negative_frame.xml", 3, "not a whole number");
+}
+
+TEST(CvmlReader, WithoutExpatSaysWhy)
+{
+	if (cvmlSupported())
+		GTEST_SKIP() << "built with expat";
+	GroundTruth gt;
+	std::string error;
+	EXPECT_FALSE(loadGroundTruth(dataPath("cvml_small.xml"), gt, error));
+	EXPECT_NE(error.find("without expat"), std::string::npos) << error;
+}
+
+TEST(CvmlReader, PetsGroundTruth)
+{
+	const std::string path = test::envOr("CALPED_SHARED_DIR", "../shared") +
+				 "/data/pets2009-s2l1/PETS2009-S2L1.xml";
+	if (!cvmlSupported() || !std::ifstream(path))
+		GTEST_SKIP() << "needs expat and " << path;
+	GroundTruth gt;
+	std::string error;
+	ASSERT_TRUE(loadGroundTruth(path, gt, error)) << error;
+	EXPECT_EQ(gt.lastFrame(), 795);
+	EXPECT_EQ(gt.count(795, false), 4650);
+	EXPECT_EQ(gt.boxes(1).size(), 3u); // annotation frame 0
+}
+
+TEST(MotReader, ReadsBoxesAndIgnoreFlags)
+{
+	GroundTruth gt;
+	std::string error;
+	ASSERT_TRUE(loadGroundTruth(dataPath("mot_small.txt"), gt, error)) << error;
+	EXPECT_EQ(gt.lastFrame(), 4);
+	ASSERT_EQ(gt.boxes(1).size(), 2u);
+	EXPECT_FALSE(gt.boxes(1)[0].ignore);
+	EXPECT_TRUE(gt.boxes(1)[1].ignore); // column 7 == 0
+	EXPECT_EQ(gt.boxes(2).size(), 1u);
+	EXPECT_TRUE(gt.boxes(3).empty());
+	const Box &b = gt.boxes(4)[0].box; // already corner and size, frames already 1-based
+	EXPECT_DOUBLE_EQ(b.x, 10.5);
+	EXPECT_DOUBLE_EQ(b.y, 20.25);
+	EXPECT_DOUBLE_EQ(b.w, 40);
+	EXPECT_DOUBLE_EQ(b.h, 100);
+	EXPECT_EQ(gt.count(4, false), 3);
+	EXPECT_EQ(gt.count(4, true), 1);
+}
+
+TEST(MotReader, MalformedFilesNameFileAndLine)
+{
+	expectLineError("mot_few_fields.txt", 3, "got 3");
+	expectLineError("mot_bad_number.txt", 2, "y \"2O1\" is not a number");
+	expectLineError("mot_frame_zero.txt", 1, "1-based");
+	expectLineError("mot_negative_size.txt", 2, "not positive");
+}
+
+TEST(GroundTruth, MissingFileIsNamed)
+{
+	GroundTruth gt;
+	std::string error;
+	EXPECT_FALSE(loadGroundTruth(dataPath("no-such-file.xml"), gt, error));
+	EXPECT_NE(error.find("no-such-file.xml"), std::string::npos) << error;
+}
+
+} // namespace
+} // namespace calped::eval_tool

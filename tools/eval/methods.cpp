@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: BSD-2-Clause
+#include "methods.h"
+
+#include "../detect/file_io.h"
+
+namespace calped::eval_tool {
+
+namespace {
+
+// Both modes are calped::Detector; they differ in the configuration.
+class DetectorMethod : public Method
+{
+public:
+	Status detect(const ImageView &image, Detections &out) override
+	{
+		return detector_->detect(image, out);
+	}
+	const FrameStats &lastStats() const override { return detector_->lastStats(); }
+
+protected:
+	bool setUp(const MethodSetup &setup, DetectorConfig config, std::string &error)
+	{
+		config.maxWidth = setup.maxWidth;
+		config.maxHeight = setup.maxHeight;
+		config.resize = setup.resize;
+		Status st = Detector::create(*setup.model, config, detector_);
+		if (!st.ok()) {
+			error = std::string("cannot set up the detector: ") + st.message();
+			return false;
+		}
+		return true;
+	}
+
+	std::unique_ptr<Detector> detector_;
+};
+
+// Dollár's sliding window over the whole fast feature pyramid.
+class GenericMethod : public DetectorMethod
+{
+public:
+	static bool create(const MethodSetup &setup, std::unique_ptr<Method> &out,
+			   std::string &error)
+	{
+		std::unique_ptr<GenericMethod> m(new GenericMethod);
+		if (!m->setUp(setup, DetectorConfig(), error))
+			return false;
+		out = std::move(m);
+		return true;
+	}
+};
+
+// The thesis's method: only the pyramid levels and windows where a person of plausible
+// world height can stand, given the camera's calibration (--calib, any format the core
+// reads), with the detector's default height range.
+class CalibratedMethod : public DetectorMethod
+{
+public:
+	static bool create(const MethodSetup &setup, std::unique_ptr<Method> &out,
+			   std::string &error)
+	{
+		std::vector<uint8_t> text;
+		if (!detect_tool::readFile(setup.calibrationPath, text, error, "calibration "))
+			return false;
+		std::unique_ptr<CalibratedMethod> m(new CalibratedMethod);
+		Status st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
+					    setup.calibrationPath.c_str(), m->camera_);
+		if (!st.ok()) {
+			error = std::string("calibration: ") + st.message();
+			return false;
+		}
+		DetectorConfig config;
+		config.method = DetectionMethod::Calibrated;
+		config.camera = &m->camera_;
+		if (!m->setUp(setup, config, error))
+			return false;
+		out = std::move(m);
+		return true;
+	}
+
+private:
+	CameraModel camera_;
+};
+
+} // namespace
+
+const std::vector<MethodEntry> &methodRegistry()
+{
+	static const std::vector<MethodEntry> kMethods = {
+		{ "generic", false, &GenericMethod::create },
+		{ "calibrated", true, &CalibratedMethod::create },
+	};
+	return kMethods;
+}
+
+const MethodEntry *findMethod(const std::string &name)
+{
+	for (const MethodEntry &m : methodRegistry())
+		if (name == m.name)
+			return &m;
+	return nullptr;
+}
+
+std::string methodNames()
+{
+	std::string names;
+	for (const MethodEntry &m : methodRegistry())
+		names += (names.empty() ? "" : ", ") + std::string(m.name);
+	return names;
+}
+
+} // namespace calped::eval_tool

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The detection methods the harness compares. Adding one is one entry in the registry in
+// methods.cpp: a name, whether it needs --calib, and a factory.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <calped/calped.h>
+
+namespace calped::eval_tool {
+
+// What every method is set up with; a method ignores what it does not use.
+struct MethodSetup {
+	const Model *model = nullptr;
+	std::string calibrationPath; // --calib FILE, may be empty
+	int maxWidth = 0, maxHeight = 0;
+	double resize = 1.0;
+};
+
+// A detector as the harness drives it: one frame in, detections and the detector's own
+// counters (FrameStats) out.
+class Method
+{
+public:
+	virtual ~Method() = default;
+	// Detections stay valid until the next call.
+	virtual Status detect(const ImageView &image, Detections &out) = 0;
+	virtual const FrameStats &lastStats() const = 0;
+};
+
+using MethodFactory = bool (*)(const MethodSetup &setup, std::unique_ptr<Method> &out,
+			       std::string &error);
+
+struct MethodEntry {
+	const char *name;
+	// Without --calib such a method is named and skipped, not an error, so one command line
+	// serves sequences with and without a calibration.
+	bool needsCalibration;
+	MethodFactory create;
+};
+
+const std::vector<MethodEntry> &methodRegistry();
+// Null for a name not in the registry.
+const MethodEntry *findMethod(const std::string &name);
+// "generic, calibrated" for messages.
+std::string methodNames();
+
+} // namespace calped::eval_tool

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The outputs people and scripts read: the thesis-style Markdown tables and the JSON file.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "run.h"
+
+namespace calped::eval_tool {
+
+// | Method | Resize | Scales (Octaves) | CApF | TPR | FPPF | TPR (any) | LAMR | ms/frame | peak RSS |
+std::string accuracyTable(const std::vector<RunResult> &runs);
+// Per-stage detector time (runs with counters only; empty string if none).
+std::string stageTable(const std::vector<RunResult> &runs);
+
+// One JSON object per run, in an array.
+std::string runsJson(const std::vector<RunResult> &runs);
+
+bool writeTextFile(const std::string &path, const std::string &text, std::string &error);
+
+} // namespace calped::eval_tool

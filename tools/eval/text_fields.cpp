@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-2-Clause
+#include "text_fields.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "../detect/file_io.h"
+
+namespace calped::eval_tool {
+
+namespace {
+
+std::string trim(const std::string &s)
+{
+	size_t b = 0, e = s.size();
+	while (b < e && (s[b] == ' ' || s[b] == '\t'))
+		b++;
+	while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
+		e--;
+	return s.substr(b, e - b);
+}
+
+} // namespace
+
+std::vector<std::string> splitCsvLine(const std::string &line)
+{
+	std::vector<std::string> fields;
+	size_t pos = 0;
+	for (;;) {
+		size_t comma = line.find(',', pos);
+		if (comma == std::string::npos) {
+			fields.push_back(trim(line.substr(pos)));
+			return fields;
+		}
+		fields.push_back(trim(line.substr(pos, comma - pos)));
+		pos = comma + 1;
+	}
+}
+
+bool parseDouble(const std::string &text, double &out)
+{
+	if (text.empty())
+		return false;
+	errno = 0;
+	char *end = nullptr;
+	const double v = std::strtod(text.c_str(), &end);
+	if (*end != '\0' || errno == ERANGE || !std::isfinite(v))
+		return false;
+	out = v;
+	return true;
+}
+
+bool parseLong(const std::string &text, long &out)
+{
+	double v;
+	// MOTChallenge files written by some tools hold "12.0" for integer columns.
+	if (!parseDouble(text, v) || v != std::floor(v) || std::fabs(v) > 1e15)
+		return false;
+	out = static_cast<long>(v);
+	return true;
+}
+
+std::string lineError(const std::string &path, long line, const std::string &message)
+{
+	return path + ":" + std::to_string(line) + ": " + message;
+}
+
+bool readTextFile(const std::string &path, std::string &out, std::string &error)
+{
+	std::vector<uint8_t> bytes;
+	if (!detect_tool::readFile(path, bytes, error))
+		return false;
+	out.assign(bytes.begin(), bytes.end());
+	return true;
+}
+
+} // namespace calped::eval_tool
