@@ -14,7 +14,9 @@ packages=(
 	libmatio-dev
 	libstb-dev
 	libgtest-dev
+	libexpat1-dev
 	ffmpeg
+	gnuplot-nox
 	valgrind
 )
 

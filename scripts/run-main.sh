@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-2-Clause
-# THE MAIN JOB: the detector over the whole PETS 2009 S2L1 sequence (795 frames).
+# THE MAIN JOB: calibrated detection over the whole PETS 2009 S2L1 sequence (795 frames),
+# with the camera's Tsai calibration (../shared/data/pets2009-s2l1/View_001.xml).
 #   out/main/detections.csv   frame,x,y,w,h,score for every detection
-#   out/main/frames.jsonl     one line per frame with the detector's time
+#   out/main/frames.jsonl     one line per frame with the detector's time, and each
+#                             detection's ground position and world height
 #   out/main/overlays/        every 100th frame with the detections drawn
 #   out/main/summary.txt      the table printed at the end
 # Then the evaluation (docs/evaluation.md): calped-eval runs the generic and calibrated
@@ -29,7 +31,9 @@ resize=2
 rm -rf "$out"
 mkdir -p "$out"
 
+calib=${CALPED_SHARED_DIR:-../shared}/data/pets2009-s2l1/View_001.xml
 cmd=("$builddir"/tools/detect/calped-detect --model "$model" --resize "$resize"
+	--calib "$calib" --method calibrated
 	--csv "$out/detections.csv" --jsonl "$out/frames.jsonl"
 	--overlay "$out/overlays" --overlay-every 100 "$frames")
 echo "run-main: ${cmd[*]}"
@@ -45,7 +49,7 @@ fi
 field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$summary"; }
 
 {
-	echo "calped main job: PETS 2009 S2L1 view 1, AcfInriaDetector, resize $resize"
+	echo "calped main job: PETS 2009 S2L1 view 1, AcfInriaDetector, calibrated, resize $resize"
 	printf '  %-22s %s\n' \
 		"frames" "$(field frames)" \
 		"detections" "$(field detections)" \

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <stb/stb_image.h>
 
@@ -58,11 +59,16 @@ std::string inriaModelBlob()
 	const std::string convert = env("CALPED_CONVERT");
 	if (shared.empty() || convert.empty() || !exists(convert))
 		return "";
+	// Several test programs may run at once: convert to a file of our own, then rename,
+	// which is atomic, so nobody reads a half-written blob.
+	const std::string tmp = blob + "." + std::to_string(getpid());
 	const std::string cmd = "'" + convert + "' '" + shared +
-				"/models/dollar-toolbox/AcfInriaDetector.mat' '" + blob +
+				"/models/dollar-toolbox/AcfInriaDetector.mat' '" + tmp +
 				"' > /dev/null";
-	if (std::system(cmd.c_str()) != 0)
+	if (std::system(cmd.c_str()) != 0 || std::rename(tmp.c_str(), blob.c_str()) != 0) {
+		std::remove(tmp.c_str());
 		return "";
+	}
 	return exists(blob) ? blob : "";
 }
 
