@@ -98,7 +98,8 @@ bool writePlots(const std::string &dir, const std::vector<RunResult> &runs,
 	}
 
 	// Stage times: one stacked bar per run with counters.
-	std::string dat = "# run resize channels approximated classification suppression other (ms/frame)\n";
+	std::string dat = "# run resize channels approximated classification candidates suppression other "
+			  "(ms/frame)\n";
 	int bars = 0;
 	for (const RunResult &r : runs) {
 		if (!r.hasCounters)
@@ -106,7 +107,7 @@ bool writePlots(const std::string &dir, const std::vector<RunResult> &runs,
 		const RunCounters &c = r.counters;
 		dat += "\"" + r.method + " " + resizeLabel(r.resize) + "\" " + num(c.msResize) + " " +
 		       num(c.msChannels) + " " + num(c.msApprox) + " " + num(c.msClassify) + " " +
-		       num(c.msNms) + " " + num(c.msOther()) + "\n";
+		       num(c.msCandidates) + " " + num(c.msNms) + " " + num(c.msOther()) + "\n";
 		bars++;
 	}
 	if (bars > 0) {
@@ -119,9 +120,9 @@ bool writePlots(const std::string &dir, const std::vector<RunResult> &runs,
 		gp += "set style fill solid 0.85 border -1\nset boxwidth 0.6\nset key outside right top\n";
 		gp += "set yrange [0:*]\nset grid ytics\nset xtics rotate by 30 right\n";
 		static const char *const kStages[] = { "resize", "channels (octaves)", "approximated levels",
-						       "classification", "suppression", "other" };
+						       "classification", "candidates", "suppression", "other" };
 		gp += "plot ";
-		for (int s = 0; s < 6; s++)
+		for (int s = 0; s < 7; s++)
 			gp += std::string(s ? ", \\\n     " : "") + "'stage_times.dat' using " +
 			      std::to_string(s + 2) + (s == 0 ? ":xtic(1)" : "") + " title " +
 			      gpQuote(kStages[s]);

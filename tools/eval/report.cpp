@@ -85,8 +85,9 @@ std::string accuracyTable(const std::vector<RunResult> &runs)
 std::string stageTable(const std::vector<RunResult> &runs)
 {
 	std::string t = "| Method | Resize | resize | channels (octaves) | approximated levels "
-			"| classification | suppression | other | total | median total | frame decode |\n"
-			"|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+			"| classification | candidates | suppression | other | total | median total "
+			"| frame decode |\n"
+			"|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
 	bool any = false;
 	for (const RunResult &r : runs) {
 		if (!r.hasCounters)
@@ -94,8 +95,9 @@ std::string stageTable(const std::vector<RunResult> &runs)
 		any = true;
 		const RunCounters &c = r.counters;
 		t += "| " + r.method + " | " + resizeCell(r) + " | " +
-		     format("%.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
-			    c.msResize, c.msChannels, c.msApprox, c.msClassify, c.msNms, c.msOther(),
+		     format("%.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
+			    c.msResize, c.msChannels, c.msApprox, c.msClassify, c.msCandidates, c.msNms,
+			    c.msOther(),
 			    c.msTotal, c.msTotalMedian, c.msDecode);
 	}
 	return any ? t : std::string();
@@ -142,6 +144,7 @@ std::string runsJson(const std::vector<RunResult> &runs)
 			j += ", \"ms_channels\": " + jsonNumber(c.msChannels);
 			j += ", \"ms_approx\": " + jsonNumber(c.msApprox);
 			j += ", \"ms_classify\": " + jsonNumber(c.msClassify);
+			j += ", \"ms_candidates\": " + jsonNumber(c.msCandidates);
 			j += ", \"ms_nms\": " + jsonNumber(c.msNms);
 			j += ", \"ms_other\": " + jsonNumber(c.msOther());
 			j += ", \"ms_decode\": " + jsonNumber(c.msDecode);

@@ -30,7 +30,8 @@ std::string overlayPath(const RunSettings &s, const std::string &stem, long fram
 
 double RunCounters::msOther() const
 {
-	return std::max(0.0, msTotal - (msResize + msChannels + msApprox + msClassify + msNms));
+	return std::max(0.0, msTotal - (msResize + msChannels + msApprox + msClassify +
+					 msCandidates + msNms));
 }
 
 bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, RunResult &out,
@@ -99,6 +100,7 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 			c.msChannels += fs.msChannels;
 			c.msApprox += fs.msApprox;
 			c.msClassify += fs.msClassify;
+			c.msCandidates += fs.msCandidates;
 			c.msNms += fs.msNms;
 			c.msTotal += fs.msTotal;
 			totals.push_back(fs.msTotal);
@@ -144,6 +146,7 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 		c.msChannels /= n;
 		c.msApprox /= n;
 		c.msClassify /= n;
+		c.msCandidates /= n;
 		c.msNms /= n;
 		c.msTotal /= n;
 		std::sort(totals.begin(), totals.end());

@@ -26,7 +26,8 @@ struct RunCounters {
 	double windowsMean = 0;    // CApF
 	double candidatesMean = 0; // windows that passed the cascade, before suppression
 	uint64_t droppedWindows = 0;
-	double msResize = 0, msChannels = 0, msApprox = 0, msClassify = 0, msNms = 0;
+	double msResize = 0, msChannels = 0, msApprox = 0, msClassify = 0, msCandidates = 0,
+	       msNms = 0;
 	double msTotal = 0;       // mean FrameStats::msTotal
 	double msTotalMedian = 0;
 	double msDecode = 0;      // mean time to get a frame (image decoding or the ffmpeg pipe)

@@ -74,7 +74,11 @@ struct FrameStats {
 	uint64_t sparseWindows = 0, denseWindows = 0;
 	int denseRegions = 0;
 	uint64_t droppedRegions = 0;
-	double msResize = 0, msChannels = 0, msApprox = 0, msClassify = 0, msNms = 0, msTotal = 0;
+	// Wall time per stage: input resize, channels of computed levels, approximated levels
+	// (with smoothing and padding), classification, calibrated candidate generation and
+	// dense-region upkeep, suppression, and the whole frame.
+	double msResize = 0, msChannels = 0, msApprox = 0, msClassify = 0, msCandidates = 0,
+	       msNms = 0, msTotal = 0;
 };
 
 // Result of one call: valid until the next detect() on the same detector.

@@ -157,6 +157,7 @@ double DetectorImpl::classifySparseDense()
 	for (int i = 0; i < scales.count; i++) {
 		if (!levelNeeded_[i])
 			continue;
+		const auto tList = Clock::now();
 		uint8_t *done = evaluated_.data() + plan_.gridFirst(i);
 		size_t n = 0;
 		const uint32_t *sparse = plan_.sparseWindows(i);
@@ -169,9 +170,11 @@ double DetectorImpl::classifySparseDense()
 			n = collectDense(i, regions_[r], n);
 		stats.sparseWindows += sparseN;
 		stats.denseWindows += n - sparseN;
+		stats.msCandidates += msSince(tList);
 		ms += classifyList(i, pyramid.level(i), frameList_.data(), n);
 		stats.levels++;
 	}
+	const auto tRegions = Clock::now();
 	// New regions around the detections outside the existing ones, best first.
 	const int found = candidateCount_;
 	for (int k = 0; k < found; k++)
@@ -183,13 +186,16 @@ double DetectorImpl::classifySparseDense()
 	});
 	for (int k = 0; k < found; k++)
 		regions_.addAround(candidates_[order_[k]]);
+	stats.msCandidates += msSince(tRegions);
 	// Pass 2: the new regions' windows, on the levels that have any.
 	for (int i = 0; i < scales.count && regions_.count() > oldRegions; i++) {
 		if (!levelNeeded_[i])
 			continue;
+		const auto tList = Clock::now();
 		size_t n = 0;
 		for (int r = oldRegions; r < regions_.count(); r++)
 			n = collectDense(i, regions_[r], n);
+		stats.msCandidates += msSince(tList);
 		if (n == 0)
 			continue;
 		stats.denseWindows += n;
@@ -325,7 +331,9 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	if (hasCamera_)
 		addWorldCoordinates(candidates_.data(), kept);
 	if (sparseDense) {
+		const auto tUpdate = Clock::now();
 		regions_.update(candidates_.data(), kept);
+		stats.msCandidates += msSince(tUpdate);
 		stats.denseRegions = regions_.count();
 		stats.droppedRegions = regions_.dropped();
 	}
