@@ -4,7 +4,9 @@
 # then builds and runs the whole test suite twice:
 #   build/       release
 #   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (any report fails the test)
-# The last line is "N passed, N failed, N skipped", counting GoogleTest cases of both runs.
+# then cross-builds it for each of $CALPED_CROSS (default aarch64; empty: none) and runs it
+# under qemu-user (scripts/cross-test.sh, build-aarch64/).
+# The last line is "N passed, N failed, N skipped", counting GoogleTest cases of all runs.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -53,6 +55,26 @@ export ASAN_OPTIONS=detect_leaks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 run_suite sanitizers build-asan -Dbuildtype=debugoptimized -Db_sanitize=address,undefined \
 	-Db_lundef=false -Dtests=true
+
+# ARM under emulation; the release tree's calped-convert prepares the model on the host.
+for target in ${CALPED_CROSS-aarch64}; do
+	echo
+	echo "=== cross $target: build-$target"
+	log=build-$target/meson-logs/testlog.junit.xml
+	rm -f "$log"
+	convert=
+	if [[ -x build/tools/convert/calped-convert ]]; then
+		convert=$PWD/build/tools/convert/calped-convert
+	fi
+	if ! CALPED_CONVERT=$convert bash scripts/cross-test.sh "$target"; then
+		failed_steps+=("cross $target")
+	fi
+	if [[ -f "$log" ]]; then
+		junits+=("$log")
+	else
+		failed_steps+=("cross $target: no junit log")
+	fi
+done
 
 read -r passed failed skipped < <(bash scripts/count-junit.sh "${junits[@]}")
 
