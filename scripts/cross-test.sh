@@ -101,18 +101,20 @@ say "model converter (build machine): $convert"
 
 # ---- 3. cross build -----------------------------------------------------------------------
 setup_args=(--cross-file "$crossfile" -Dbuildtype=release -Dtests=true "$@")
+# Meson reads cross files only when a folder is set up: a change of the arguments or of
+# any toolchains/*.ini sets the folder up afresh.
 stamp=$builddir/.cross-test-setup
+setup_id="${setup_args[*]} $(cat toolchains/*.ini | sha256sum | cut -c1-16)"
 if [[ -f "$builddir/meson-private/coredata.dat" && -f "$stamp" &&
-	"$(cat "$stamp")" == "${setup_args[*]}" ]]; then
+	"$(cat "$stamp")" == "$setup_id" ]]; then
 	say "reconfiguring $builddir"
 	meson setup --reconfigure "$builddir"
 else
-	# New or different cross files: they are fixed at configure time, so start afresh.
 	wipe=()
 	[[ -f "$builddir/meson-private/coredata.dat" ]] && wipe=(--wipe)
 	say "meson setup ${wipe[*]} $builddir ${setup_args[*]}"
 	meson setup "${wipe[@]}" "$builddir" "${setup_args[@]}"
-	echo "${setup_args[*]}" >"$stamp"
+	echo "$setup_id" >"$stamp"
 fi
 say "ninja -C $builddir -j $jobs"
 ninja -C "$builddir" -j "$jobs"
