@@ -8,10 +8,12 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <calped/calped.h>
 
+#include "cli_error.h"
 #include "file_io.h"
 #include "frame_list.h"
 #include "image_io.h"
@@ -20,21 +22,16 @@
 #include "progress.h"
 #include "writers.h"
 
+using calped::kExitRuntime;
+using calped::kExitUsage;
+
 namespace calped::detect_tool {
 
 namespace {
 
-constexpr int kExitRuntime = 1;
-constexpr int kExitUsage = 2;
-
-// Every error is one line on stderr, prefixed so it is easy to find in logs.
 int fail(int code, std::string message)
 {
-	for (char &c : message)
-		if (c == '\n' || c == '\r')
-			c = ' ';
-	std::fprintf(stderr, "calped-detect: %s\n", message.c_str());
-	return code;
+	return cliFail("calped-detect", code, std::move(message));
 }
 
 std::string frameLabel(long frame, const std::string &path)

@@ -8,10 +8,12 @@
 #include <filesystem>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <calped/calped.h>
 
+#include "../detect/cli_error.h"
 #include "../detect/file_io.h"
 #include "../detect/frame_list.h"
 #include "dets_csv.h"
@@ -28,20 +30,16 @@
 #include "runner.h"
 #include "text_fields.h"
 
+using calped::kExitRuntime;
+using calped::kExitUsage;
+
 namespace calped::eval_tool {
 
 namespace {
 
-constexpr int kExitRuntime = 1;
-constexpr int kExitUsage = 2;
-
 int fail(int code, std::string message)
 {
-	for (char &c : message)
-		if (c == '\n' || c == '\r')
-			c = ' ';
-	std::fprintf(stderr, "calped-eval: %s\n", message.c_str());
-	return code;
+	return cliFail("calped-eval", code, std::move(message));
 }
 
 void notice(const EvalOptions &opt, const std::string &message)
