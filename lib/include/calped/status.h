@@ -23,6 +23,11 @@ enum class ErrorCode {
 	OutOfMemory,            // setup could not allocate its buffers
 	IoError,                // a file could not be read or written (tools and ports)
 	ParseError,             // a text input is malformed (names file and line)
+	CameraNotFound,         // ports: no camera matches the id, or none exists
+	CameraError,            // ports: the camera refused a setting or failed to start
+	CameraLost,             // ports: the camera stopped answering or disappeared mid-stream
+	Timeout,                // ports: no frame arrived within the timeout
+	EndOfStream,            // ports: a finite source (file sequence) has no more frames
 };
 
 // Name of an error code, e.g. "ModelChecksum".

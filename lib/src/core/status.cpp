@@ -24,6 +24,11 @@ const char *errorCodeName(ErrorCode code)
 	case ErrorCode::OutOfMemory: return "OutOfMemory";
 	case ErrorCode::IoError: return "IoError";
 	case ErrorCode::ParseError: return "ParseError";
+	case ErrorCode::CameraNotFound: return "CameraNotFound";
+	case ErrorCode::CameraError: return "CameraError";
+	case ErrorCode::CameraLost: return "CameraLost";
+	case ErrorCode::Timeout: return "Timeout";
+	case ErrorCode::EndOfStream: return "EndOfStream";
 	}
 	return "Unknown";
 }
