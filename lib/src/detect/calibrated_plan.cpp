@@ -89,6 +89,7 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 			cols_[i] = cols;
 			plausible_.resize(plausible_.size() + size_t(rows) * cols, 0);
 			uint8_t *grid = plausible_.data() + gridFirst_[i];
+			int firstRow = rows, lastRow = -1;
 			for (int c = 0; c < cols; c++)
 				for (int r = 0; r < rows; r++) {
 					double x, y, w, h;
@@ -100,9 +101,18 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 					const uint32_t packed = uint32_t(r) << 16 | uint32_t(c);
 					windows_.push_back(packed);
 					grid[size_t(r) * cols + c] = 1;
+					firstRow = std::min(firstRow, r);
+					lastRow = std::max(lastRow, r);
 					if (r % sparseRows == 0 && c % sparseCols == 0)
 						sparse_.push_back(packed);
 				}
+			// A window at row r reads padded rows [r * step, r * step + model height).
+			const int step = params.stride / params.shrink;
+			const int windowRows = params.modelDsPadH / params.shrink;
+			levelRows_[i] = lastRow < 0 ? RowBand()
+						    : RowBand{ firstRow * step - padH,
+							       lastRow * step + windowRows - padH }
+							      .clipped(l.height);
 		}
 		first_[scales.count] = windows_.size();
 		sparseFirst_[scales.count] = sparse_.size();

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pyramid/row_band.h"
 #include "pyramid/scales.h"
 
 namespace calped {
@@ -48,6 +49,9 @@ public:
 		     double minHeight, double maxHeight);
 
 	bool levelNeeded(int i) const { return first_[i + 1] > first_[i]; }
+	// The rows of level i (before padding) that its plausible windows read; empty when
+	// the level has none.
+	RowBand levelRows(int i) const { return levelRows_[i]; }
 	// Windows of level i, packed row << 16 | column, columns outer (the toolbox's order).
 	const uint32_t *windows(int i) const { return windows_.data() + first_[i]; }
 	size_t windowCount(int i) const { return first_[i + 1] - first_[i]; }
@@ -83,6 +87,7 @@ private:
 	size_t first_[kMaxLevels + 1] = {}, sparseFirst_[kMaxLevels + 1] = {};
 	size_t gridFirst_[kMaxLevels + 1] = {};
 	int rows_[kMaxLevels] = {}, cols_[kMaxLevels] = {};
+	RowBand levelRows_[kMaxLevels];
 };
 
 } // namespace calped

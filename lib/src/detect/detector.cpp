@@ -99,8 +99,10 @@ Status DetectorImpl::initCalibrated()
 			 config.maxPersonHeight);
 	if (!st.ok())
 		return st;
-	for (int i = 0; i < scales.count; i++)
+	for (int i = 0; i < scales.count; i++) {
 		levelNeeded_[i] = plan_.levelNeeded(i);
+		levelRows_[i] = plan_.levelRows(i);
+	}
 	if (config.denseRegionPersistence < 1 || config.maxDenseRegions < 1)
 		return Status::error(ErrorCode::InvalidArgument,
 				     "dense region persistence %d and capacity %d must be >= 1",
@@ -289,7 +291,7 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	stats.msResize = msSince(tStart);
 
 	const bool calibrated = config.method == DetectionMethod::Calibrated;
-	st = pyramid.build(rgb, stride, width, height, calibrated ? levelNeeded_ : nullptr);
+	st = pyramid.build(rgb, stride, width, height, calibrated ? levelRows_ : nullptr);
 	if (!st.ok())
 		return st;
 

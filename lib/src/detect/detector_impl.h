@@ -49,6 +49,7 @@ private:
 	CameraModel camera_;
 	CalibratedPlan plan_;
 	bool levelNeeded_[kMaxLevels] = {};
+	RowBand levelRows_[kMaxLevels]; // calibrated: the rows of each level its windows read
 	DenseRegions regions_;
 	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
 	std::vector<uint32_t> frameList_;

@@ -54,6 +54,10 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 	params_ = params;
 	padH_ = params.padH / params.shrink;
 	padW_ = params.padW / params.shrink;
+	// A band of a level's LUV image gives exact channels in its rows but the margin: the
+	// colour smoothing and the gradient each reach one row, the normalisation gradNormRad
+	// rows. Rounded up to whole cells.
+	channelMargin_ = (params.gradNormRad + 2 + 3) / 4 * 4;
 
 	try {
 		kernels::buildLuvTables(luvTables_);
@@ -71,6 +75,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		xTaps_.resize(taps);
 		yTaps_.resize(taps);
 		yTapsGain_.resize(taps);
+		yTapsBand_.resize(taps);
 
 		maxLevelH_ = luvH / 4 + 2;
 		maxLevelW_ = luvW / 4 + 2;
@@ -102,8 +107,77 @@ Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
 	return Status::success();
 }
 
+void Pyramid::planRows(const RowBand *levelRows, int width, int height)
+{
+	const int n = scales_.count;
+	for (int i = 0; i < n; i++)
+		rows_[i] = LevelRows();
+	// What the classifier reads, and the raw channel rows the smoothing reaches for;
+	// approximated levels pass their needs on to the computed level they resample.
+	for (int i = 0; i < n; i++) {
+		const PyramidLevel &l = scales_.levels[i];
+		LevelRows &r = rows_[i];
+		r.wanted = levelRows ? levelRows[i].clipped(l.height) : RowBand{ 0, l.height };
+		const RowBand raw = r.wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
+		r.raw.add(raw);
+		if (!l.computed && !raw.empty()) {
+			const PyramidLevel &src = scales_.levels[l.source];
+			kernels::buildResampleTaps(src.height, l.height, 1.0, yTaps_.data());
+			rows_[l.source].raw.add(sourceRows(yTaps_.data(), raw));
+		}
+	}
+	// The LUV rows each computed level's channels need, with the margin.
+	halfLevel_ = -1;
+	for (int i = 0; i < n; i++) {
+		const PyramidLevel &l = scales_.levels[i];
+		if (!l.computed)
+			continue;
+		if (l.scale == 0.5 && params_.nApprox > 0 && halfLevel_ < 0)
+			halfLevel_ = i;
+		LevelRows &r = rows_[i];
+		r.chan = RowBand{ 4 * r.raw.begin - channelMargin_, 4 * r.raw.end + channelMargin_ }
+				 .clipped(4 * l.height);
+		if (r.raw.empty())
+			r.chan = RowBand();
+		r.luv = r.chan;
+	}
+	// Sources, smallest first: octaves below the half-size image are resampled from it
+	// (as the toolbox does), the others from the whole image.
+	fullRows_ = RowBand();
+	for (int i = n - 1; i >= 0; i--) {
+		const PyramidLevel &l = scales_.levels[i];
+		const LevelRows &r = rows_[i];
+		if (!l.computed || r.luv.empty())
+			continue;
+		const int w1 = l.width * 4, h1 = l.height * 4;
+		if (w1 == width && h1 == height) {
+			fullRows_.add(r.luv);
+			continue;
+		}
+		const bool fromHalf = halfLevel_ >= 0 && i > halfLevel_;
+		const int srcHeight = fromHalf ? scales_.levels[halfLevel_].height * 4 : height;
+		kernels::buildResampleTaps(srcHeight, h1, 1.0, yTaps_.data());
+		const RowBand src = sourceRows(yTaps_.data(), r.luv);
+		if (fromHalf)
+			rows_[halfLevel_].luv.add(src);
+		else
+			fullRows_.add(src);
+	}
+}
+
+void Pyramid::resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst,
+			   const RowBand &rows, const kernels::ResampleTap *yTaps)
+{
+	const RowBand srcRows = sourceRows(yTaps, rows);
+	shiftTaps(yTaps, rows, srcRows.begin, yTapsBand_.data());
+	Plane<uint16_t> tmp = resampleTmp_.view(dst.width, srcRows.size());
+	k_->resamplePlane(src.row(srcRows.begin), src.stride, src.width, srcRows.size(),
+			  dst.row(rows.begin), dst.stride, dst.width, rows.size(), xTaps_.data(),
+			  yTapsBand_.data(), tmp.data, tmp.stride);
+}
+
 Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
-		      const bool *levelNeeded)
+		      const RowBand *levelRows)
 {
 	const auto t0 = Clock::now();
 	if (!luv_[0].fits(width, height))
@@ -113,24 +187,17 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 	if (!st.ok())
 		return st;
 	width_ = width;
-	// Computed levels whose channels some needed level uses, and the last one needed
-	// (the half-size image must exist for every octave below it).
-	bool channelsNeeded[kMaxLevels];
-	int lastNeeded = -1;
-	for (int i = 0; i < scales_.count; i++)
-		channelsNeeded[i] = false;
-	for (int i = 0; i < scales_.count; i++)
-		if (!levelNeeded || levelNeeded[i]) {
-			channelsNeeded[scales_.levels[i].source] = true;
-			lastNeeded = std::max(lastNeeded, scales_.levels[i].source);
-		}
 	height_ = height;
+	planRows(levelRows, width, height);
 
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width, height);
-	k_->rgbToLuv(luvTables_, rgb, stride, width, height, luv[0].data, luv[1].data,
-			      luv[2].data, luv[0].stride);
+	if (!fullRows_.empty())
+		k_->rgbToLuv(luvTables_, rgb + fullRows_.begin * stride, stride, width,
+			     fullRows_.size(), luv[0].row(fullRows_.begin),
+			     luv[1].row(fullRows_.begin), luv[2].row(fullRows_.begin),
+			     luv[0].stride);
 
 	// Computed levels, from the largest: each is resampled from the whole image, or
 	// from the half-size image once that exists (as the toolbox does).
@@ -139,48 +206,48 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 	computedCount = 0;
 	for (int i = 0; i < scales_.count; i++) {
 		const PyramidLevel &l = scales_.levels[i];
-		if (!l.computed || i > lastNeeded)
+		const LevelRows &r = rows_[i];
+		if (!l.computed)
 			continue;
-		const bool isHalf = l.scale == 0.5 && params_.nApprox > 0;
-		// A computed level nobody needs is skipped, unless it is the half-size image
-		// the smaller octaves are resampled from.
-		if (!channelsNeeded[i] && !isHalf)
+		// Every computed level keeps its place in the store, so offsets do not depend
+		// on which rows a frame needs.
+		const size_t need = size_t(kChannelCount) * l.width * l.height;
+		if (offset + need > realStore_.size())
+			return Status::error(ErrorCode::ImageTooLarge, "channels of level %d do not fit", i);
+		realOffset_[i] = offset;
+		offset += need;
+		if (r.luv.empty())
 			continue;
+		const bool isHalf = i == halfLevel_;
 		const int w1 = l.width * 4, h1 = l.height * 4;
-		Plane<const uint16_t> in[3];
+		Plane<uint16_t> in[3];
 		if (w1 == width && h1 == height) {
 			for (int c = 0; c < 3; c++)
-				in[c] = { luv[c].data, w1, h1, luv[c].stride };
+				in[c] = luv[c];
 		} else {
 			if (!levelLuv_[0].fits(w1, h1) || (isHalf && !halfLuv_[0].fits(w1, h1)))
 				return Status::error(ErrorCode::ImageTooLarge, "level %d does not fit", i);
 			if (!kernels::buildResampleTaps(source[0].width, w1, 1.0, xTaps_.data()) ||
 			    !kernels::buildResampleTaps(source[0].height, h1, 1.0, yTaps_.data()))
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-			Plane<uint16_t> tmp = resampleTmp_.view(w1, source[0].height);
-			Plane<uint16_t> dst[3];
 			for (int c = 0; c < 3; c++) {
-				dst[c] = isHalf ? halfLuv_[c].view(w1, h1) : levelLuv_[c].view(w1, h1);
-				k_->resamplePlane(source[c].data, source[c].stride, source[c].width,
-							   source[c].height, dst[c].data, dst[c].stride,
-							   w1, h1, xTaps_.data(), yTaps_.data(), tmp.data,
-							   tmp.stride);
-				in[c] = { dst[c].data, w1, h1, dst[c].stride };
+				in[c] = isHalf ? halfLuv_[c].view(w1, h1) : levelLuv_[c].view(w1, h1);
+				resampleRows(source[c], in[c], r.luv, yTaps_.data());
 			}
 			if (isHalf)
 				for (int c = 0; c < 3; c++)
-					source[c] = dst[c];
+					source[c] = in[c];
 		}
-		if (!channelsNeeded[i])
+		if (r.chan.empty())
 			continue;
-		const size_t need = size_t(kChannelCount) * l.width * l.height;
-		if (offset + need > realStore_.size())
-			return Status::error(ErrorCode::ImageTooLarge, "channels of level %d do not fit", i);
-		realOffset_[i] = offset;
+		Plane<const uint16_t> band[3];
+		for (int c = 0; c < 3; c++)
+			band[c] = { in[c].row(r.chan.begin), w1, r.chan.size(), in[c].stride };
 		Plane<uint16_t> out[kChannelCount];
-		planesAt(realStore_.data() + offset, l.width, l.height, out);
-		channels_.compute(in, w1, h1, out);
-		offset += need;
+		planesAt(realStore_.data() + offset - need, l.width, l.height, out);
+		for (int c = 0; c < kChannelCount; c++)
+			out[c].data = out[c].row(r.chan.begin / 4);
+		channels_.compute(band, w1, r.chan.size(), out);
 		computedCount++;
 	}
 	msChannels = msSince(t0);
@@ -203,7 +270,6 @@ void Pyramid::approximate(int i, Plane<uint16_t> out[kChannelCount])
 	realLevelPlanes(l.source, src);
 	planesAt(approx_.data(), l.width, l.height, out);
 	kernels::buildResampleTaps(r.width, l.width, 1.0, xTaps_.data());
-	Plane<uint16_t> tmp = resampleTmp_.view(l.width, r.height);
 	// Power law: channel type j scales by (s / s_source)^-lambda_j.
 	const int typeOf[kChannelCount] = { 0, 0, 0, 1, 2, 2, 2, 2, 2, 2 };
 	int builtFor = -1;
@@ -214,9 +280,7 @@ void Pyramid::approximate(int i, Plane<uint16_t> out[kChannelCount])
 			kernels::buildResampleTaps(r.height, l.height, gain, yTapsGain_.data());
 			builtFor = type;
 		}
-		k_->resamplePlane(src[c].data, src[c].stride, r.width, r.height, out[c].data,
-					   out[c].stride, l.width, l.height, xTaps_.data(),
-					   yTapsGain_.data(), tmp.data, tmp.stride);
+		resampleRows(src[c], out[c], rows_[i].raw, yTapsGain_.data());
 	}
 }
 
@@ -235,18 +299,24 @@ LevelChannels Pyramid::level(int i)
 	const auto t0 = Clock::now();
 	const int w = l.width, h = l.height;
 	const int pw = w + 2 * padW_, ph = h + 2 * padH_;
+	// Smoothing the raw band is exact in the wanted rows (it reaches one row further);
+	// padding above or below the level exists only where the band touches that edge.
+	const RowBand band = rows_[i].raw;
 	for (int c = 0; c < kChannelCount; c++) {
 		uint16_t *plane = levelBuf_.data() + c * planeStride_;
 		uint16_t *inner = plane + padH_ * rowStride_ + padW_;
+		if (band.empty())
+			break;
 		if (params_.pyramidSmooth > 0)
-			k_->smoothTri1(raw[c].data, raw[c].stride, inner, rowStride_, w, h,
-						rowTmp_.data());
+			k_->smoothTri1(raw[c].row(band.begin), raw[c].stride,
+				       inner + band.begin * rowStride_, rowStride_, w, band.size(),
+				       rowTmp_.data());
 		else
-			for (int y = 0; y < h; y++)
+			for (int y = band.begin; y < band.end; y++)
 				std::memcpy(inner + y * rowStride_, raw[c].row(y), sizeof(uint16_t) * w);
 		// Colour is padded by replication, gradients by zeros (the toolbox's padWith).
 		const bool replicate = c < 3;
-		for (int y = padH_; y < padH_ + h; y++) {
+		for (int y = padH_ + band.begin; y < padH_ + band.end; y++) {
 			uint16_t *row = plane + y * rowStride_;
 			const uint16_t left = replicate ? row[padW_] : 0;
 			const uint16_t right = replicate ? row[padW_ + w - 1] : 0;
@@ -256,12 +326,18 @@ LevelChannels Pyramid::level(int i)
 		for (int y = 0; y < padH_; y++) {
 			uint16_t *top = plane + y * rowStride_;
 			uint16_t *bottom = plane + (ph - 1 - y) * rowStride_;
-			if (replicate) {
-				std::memcpy(top, plane + padH_ * rowStride_, sizeof(uint16_t) * pw);
-				std::memcpy(bottom, plane + (padH_ + h - 1) * rowStride_, sizeof(uint16_t) * pw);
-			} else {
-				std::fill(top, top + pw, 0);
-				std::fill(bottom, bottom + pw, 0);
+			if (band.begin == 0) {
+				if (replicate)
+					std::memcpy(top, plane + padH_ * rowStride_, sizeof(uint16_t) * pw);
+				else
+					std::fill(top, top + pw, 0);
+			}
+			if (band.end == h) {
+				if (replicate)
+					std::memcpy(bottom, plane + (padH_ + h - 1) * rowStride_,
+						    sizeof(uint16_t) * pw);
+				else
+					std::fill(bottom, bottom + pw, 0);
 			}
 		}
 	}

@@ -11,6 +11,7 @@
 #include "channels/channel_computer.h"
 #include "core/plane.h"
 #include "kernels.h"
+#include "pyramid/row_band.h"
 #include "pyramid/scales.h"
 
 namespace calped {
@@ -33,17 +34,19 @@ public:
 		    const kernels::KernelTable &k = kernels::bestKernels());
 
 	// Colour conversion and channels of the computed levels for one RGB8 image: all of
-	// them, or (levelNeeded non-null, one flag per level of scales()) only those some
-	// needed level is or is approximated from.
+	// them, or (levelRows non-null, one band per level of scales(), in rows of the level
+	// before padding) only what the classifier will read of each level: the level's rows
+	// in its band, and the padding beside them. Empty bands skip a level.
 	Status build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
-		     const bool *levelNeeded = nullptr);
+		     const RowBand *levelRows = nullptr);
 
 	// The scale list build() will use for an image of this size (for setup).
 	Status scalesFor(int width, int height, ScaleList &out) const;
 
 	const ScaleList &scales() const { return scales_; }
 
-	// Smooth and pad level i (computing it by approximation first if needed).
+	// Smooth and pad level i (computing it by approximation first if needed), in the
+	// band build() was given for it (rows outside it hold stale data).
 	LevelChannels level(int i);
 
 	ptrdiff_t rowStride() const { return rowStride_; }
@@ -57,6 +60,17 @@ public:
 	double msChannels = 0, msApprox = 0, msSmooth = 0;
 
 private:
+	// The rows each stage must produce for the bands the classifier needs.
+	struct LevelRows {
+		RowBand wanted; // smoothed, padded rows the classifier reads
+		RowBand raw;    // raw channel rows (wanted plus the smoothing's reach)
+		RowBand chan;   // computed levels: rows of the level's LUV image fed to the channels
+		RowBand luv;    // computed levels: rows of its LUV image that must exist (chan, and
+				// for the half-size image the rows smaller octaves resample)
+	};
+	void planRows(const RowBand *levelRows, int width, int height);
+	void resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst, const RowBand &rows,
+			  const kernels::ResampleTap *yTaps);
 	void approximate(int i, Plane<uint16_t> out[kChannelCount]);
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
 
@@ -65,6 +79,10 @@ private:
 	kernels::LuvTables luvTables_;
 	ChannelComputer channels_;
 	ScaleList scales_;
+	LevelRows rows_[kMaxLevels];
+	RowBand fullRows_; // rows of the whole-image LUV planes the levels read
+	int halfLevel_ = -1; // the computed level at scale 1/2, source of smaller octaves
+	int channelMargin_ = 8;
 	int width_ = 0, height_ = 0;
 	int padH_ = 0, padW_ = 0;
 
@@ -72,7 +90,7 @@ private:
 	PlaneBuffer<uint16_t> halfLuv_[3];  // the image at scale 1/2 (source of smaller octaves)
 	PlaneBuffer<uint16_t> levelLuv_[3]; // image resampled to one computed scale
 	PlaneBuffer<uint16_t> resampleTmp_;
-	std::vector<kernels::ResampleTap> xTaps_, yTaps_, yTapsGain_;
+	std::vector<kernels::ResampleTap> xTaps_, yTaps_, yTapsGain_, yTapsBand_;
 
 	// Raw (unsmoothed, unpadded) channels of every computed level, back to back.
 	std::vector<uint16_t> realStore_;

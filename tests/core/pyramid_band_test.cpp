@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The calibrated mode computes each pyramid level only in the rows its windows read. Those
+// rows (and the padding beside them) must equal the full pyramid's bit for bit: the bands
+// are a saving, never an approximation.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "pyramid/pyramid.h"
+#include "synthetic.h"
+
+namespace calped {
+namespace {
+
+// Padded rows of a level that a band of level rows makes valid: the band's rows, and the
+// padding above or below only where the band reaches that edge of the level.
+void checkLevelRows(const LevelChannels &full, const LevelChannels &part, const RowBand &band,
+		    int levelHeight, int padH, int level)
+{
+	ASSERT_EQ(full.paddedHeight, part.paddedHeight);
+	ASSERT_EQ(full.paddedWidth, part.paddedWidth);
+	const int y0 = band.begin == 0 ? 0 : band.begin + padH;
+	const int y1 = band.end == levelHeight ? full.paddedHeight : band.end + padH;
+	int mismatches = 0;
+	for (int c = 0; c < kChannelCount; c++)
+		for (int y = y0; y < y1; y++) {
+			const uint16_t *a = full.data + c * full.planeStride + y * full.rowStride;
+			const uint16_t *b = part.data + c * part.planeStride + y * part.rowStride;
+			if (std::memcmp(a, b, sizeof(uint16_t) * full.paddedWidth) != 0 && mismatches++ < 5)
+				ADD_FAILURE() << "level " << level << " channel " << c << " padded row " << y
+					      << " differs (band " << band.begin << ".." << band.end << ")";
+		}
+	EXPECT_EQ(mismatches, 0) << "level " << level;
+}
+
+void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed)
+{
+	ModelParams p; // the INRIA model's options
+	Pyramid full, banded;
+	ASSERT_TRUE(full.init(p, width, height).ok());
+	ASSERT_TRUE(banded.init(p, width, height).ok());
+	ASSERT_TRUE(full.build(rgb.data(), 3 * width, width, height).ok());
+	const ScaleList &scales = full.scales();
+
+	// Random bands: empty, touching the top or bottom, one row, interior, whole level.
+	std::mt19937 rng(seed);
+	RowBand bands[kMaxLevels];
+	for (int i = 0; i < scales.count; i++) {
+		const int h = scales.levels[i].height;
+		const int kind = int(rng() % 6);
+		int b = int(rng() % h), e = b + 1 + int(rng() % h);
+		if (kind == 0)
+			b = e = 0;
+		else if (kind == 1)
+			b = 0;
+		else if (kind == 2)
+			e = h;
+		else if (kind == 3)
+			e = b + 1;
+		else if (kind == 4)
+			b = -3, e = h + 5; // beyond the level: clipped
+		bands[i] = RowBand{ b, e };
+	}
+	ASSERT_TRUE(banded.build(rgb.data(), 3 * width, width, height, bands).ok());
+	ASSERT_EQ(banded.scales().count, scales.count);
+	EXPECT_LE(banded.computedCount, full.computedCount);
+
+	for (int i = 0; i < scales.count; i++) {
+		const RowBand band = bands[i].clipped(scales.levels[i].height);
+		if (band.empty())
+			continue;
+		const LevelChannels part = banded.level(i); // each pyramid owns its level buffer
+		const LevelChannels whole = full.level(i);
+		checkLevelRows(whole, part, band, scales.levels[i].height, full.padCellsH(), i);
+	}
+}
+
+TEST(PyramidBands, RowsEqualTheFullPyramid)
+{
+	const int width = 331, height = 247; // odd sizes: rounding of every level differs
+	for (uint32_t seed = 1; seed <= 8; seed++) {
+		SCOPED_TRACE(seed);
+		compareBands(test::randomImage(seed, width, height), width, height, seed * 77);
+	}
+}
+
+TEST(PyramidBands, RowsEqualTheFullPyramidUpscaled)
+{
+	// At resize 2 the first octave is the largest image: the calibrated mode's main case.
+	const int width = 2 * 160, height = 2 * 124;
+	compareBands(test::randomImage(9, width, height), width, height, 5);
+}
+
+TEST(PyramidBands, NoBandsComputeNothing)
+{
+	const int width = 200, height = 150;
+	const std::vector<uint8_t> rgb = test::randomImage(3, width, height);
+	ModelParams p;
+	Pyramid pyr;
+	ASSERT_TRUE(pyr.init(p, width, height).ok());
+	RowBand none[kMaxLevels];
+	ASSERT_TRUE(pyr.build(rgb.data(), 3 * width, width, height, none).ok());
+	EXPECT_EQ(pyr.computedCount, 0);
+}
+
+} // namespace
+} // namespace calped
