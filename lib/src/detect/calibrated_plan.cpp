@@ -52,6 +52,21 @@ int thesisScaleList(double smallest, int scalesPerOctave, double *out, int capac
 	return n;
 }
 
+namespace {
+
+// Rows of a level (before padding) read by windows in rows firstRow..lastRow: a window at
+// row r reads padded rows [r * step, r * step + model height).
+RowBand windowRowsRead(const ModelParams &p, int padH, int firstRow, int lastRow, int height)
+{
+	if (lastRow < firstRow)
+		return RowBand();
+	const int step = p.stride / p.shrink;
+	const int windowRows = p.modelDsPadH / p.shrink;
+	return RowBand{ firstRow * step - padH, lastRow * step + windowRows - padH }.clipped(height);
+}
+
+} // namespace
+
 Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &params,
 			     const ScaleList &scales, double resize, int padH, int padW,
 			     const Classifier &classifier, double minHeight, double maxHeight)
@@ -67,6 +82,7 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 	g.shiftW = (params.modelDsPadW - double(params.modelDsW)) / 2 - params.padW;
 	g.resize = resize;
 	params_ = params;
+	padH_ = padH;
 	geometry_ = g;
 	scales_ = scales;
 	// Half a box, in window steps (cells of the level).
@@ -106,13 +122,7 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 					if (r % sparseRows == 0 && c % sparseCols == 0)
 						sparse_.push_back(packed);
 				}
-			// A window at row r reads padded rows [r * step, r * step + model height).
-			const int step = params.stride / params.shrink;
-			const int windowRows = params.modelDsPadH / params.shrink;
-			levelRows_[i] = lastRow < 0 ? RowBand()
-						    : RowBand{ firstRow * step - padH,
-							       lastRow * step + windowRows - padH }
-							      .clipped(l.height);
+			levelRows_[i] = windowRowsRead(params, padH, firstRow, lastRow, l.height);
 		}
 		first_[scales.count] = windows_.size();
 		sparseFirst_[scales.count] = sparse_.size();
@@ -123,6 +133,17 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 		return Status::error(ErrorCode::OutOfMemory, "calibrated window lists");
 	}
 	return Status::success();
+}
+
+RowBand CalibratedPlan::rowsRead(int i, const uint32_t *windows, size_t count) const
+{
+	int firstRow = rows_[i], lastRow = -1;
+	for (size_t k = 0; k < count; k++) {
+		const int r = int(windows[k] >> 16);
+		firstRow = std::min(firstRow, r);
+		lastRow = std::max(lastRow, r);
+	}
+	return windowRowsRead(params_, padH_, firstRow, lastRow, scales_.levels[i].height);
 }
 
 size_t CalibratedPlan::largestLevelWindows() const

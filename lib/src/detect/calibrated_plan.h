@@ -52,6 +52,8 @@ public:
 	// The rows of level i (before padding) that its plausible windows read; empty when
 	// the level has none.
 	RowBand levelRows(int i) const { return levelRows_[i]; }
+	// The rows of level i that these windows (row << 16 | column) read.
+	RowBand rowsRead(int i, const uint32_t *windows, size_t count) const;
 	// Windows of level i, packed row << 16 | column, columns outer (the toolbox's order).
 	const uint32_t *windows(int i) const { return windows_.data() + first_[i]; }
 	size_t windowCount(int i) const { return first_[i + 1] - first_[i]; }
@@ -88,6 +90,7 @@ private:
 	size_t gridFirst_[kMaxLevels + 1] = {};
 	int rows_[kMaxLevels] = {}, cols_[kMaxLevels] = {};
 	RowBand levelRows_[kMaxLevels];
+	int padH_ = 0;
 };
 
 } // namespace calped

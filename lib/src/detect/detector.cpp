@@ -201,7 +201,9 @@ double DetectorImpl::classifySparseDense()
 		if (n == 0)
 			continue;
 		stats.denseWindows += n;
-		ms += classifyList(i, pyramid.level(i), frameList_.data(), n);
+		// Only the rows these windows read: the level was prepared in full in pass 1.
+		const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
+		ms += classifyList(i, pyramid.level(i, &rows), frameList_.data(), n);
 	}
 	return ms;
 }

@@ -262,7 +262,7 @@ void Pyramid::realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount])
 	planesAt(realStore_.data() + realOffset_[i], l.width, l.height, out);
 }
 
-void Pyramid::approximate(int i, Plane<uint16_t> out[kChannelCount])
+void Pyramid::approximate(int i, const RowBand &rows, Plane<uint16_t> out[kChannelCount])
 {
 	const PyramidLevel &l = scales_.levels[i];
 	const PyramidLevel &r = scales_.levels[l.source];
@@ -280,28 +280,34 @@ void Pyramid::approximate(int i, Plane<uint16_t> out[kChannelCount])
 			kernels::buildResampleTaps(r.height, l.height, gain, yTapsGain_.data());
 			builtFor = type;
 		}
-		resampleRows(src[c], out[c], rows_[i].raw, yTapsGain_.data());
+		resampleRows(src[c], out[c], rows, yTapsGain_.data());
 	}
 }
 
-LevelChannels Pyramid::level(int i)
+LevelChannels Pyramid::level(int i, const RowBand *only)
 {
 	const PyramidLevel &l = scales_.levels[i];
+	// Smoothing the raw band is exact in the wanted rows (it reaches one row further);
+	// padding above or below the level exists only where the band touches that edge.
+	RowBand band = rows_[i].raw;
+	if (only) {
+		const RowBand wanted = *only;
+		band = wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
+		if (!rows_[i].raw.contains(band))
+			band = rows_[i].raw; // outside what build() prepared: keep its band
+	}
 	Plane<uint16_t> raw[kChannelCount];
 	if (l.computed) {
 		realLevelPlanes(i, raw);
 	} else {
 		const auto t0 = Clock::now();
-		approximate(i, raw);
+		approximate(i, band, raw);
 		msApprox += msSince(t0);
 	}
 
 	const auto t0 = Clock::now();
 	const int w = l.width, h = l.height;
 	const int pw = w + 2 * padW_, ph = h + 2 * padH_;
-	// Smoothing the raw band is exact in the wanted rows (it reaches one row further);
-	// padding above or below the level exists only where the band touches that edge.
-	const RowBand band = rows_[i].raw;
 	for (int c = 0; c < kChannelCount; c++) {
 		uint16_t *plane = levelBuf_.data() + c * planeStride_;
 		uint16_t *inner = plane + padH_ * rowStride_ + padW_;

@@ -46,8 +46,9 @@ public:
 	const ScaleList &scales() const { return scales_; }
 
 	// Smooth and pad level i (computing it by approximation first if needed), in the
-	// band build() was given for it (rows outside it hold stale data).
-	LevelChannels level(int i);
+	// band build() was given for it, or only in rows `only` of that band (rows outside
+	// hold stale data).
+	LevelChannels level(int i, const RowBand *only = nullptr);
 
 	ptrdiff_t rowStride() const { return rowStride_; }
 	ptrdiff_t planeStride() const { return planeStride_; }
@@ -71,7 +72,7 @@ private:
 	void planRows(const RowBand *levelRows, int width, int height);
 	void resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst, const RowBand &rows,
 			  const kernels::ResampleTap *yTaps);
-	void approximate(int i, Plane<uint16_t> out[kChannelCount]);
+	void approximate(int i, const RowBand &rows, Plane<uint16_t> out[kChannelCount]);
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
 
 	ModelParams params_;
