@@ -81,6 +81,7 @@ int run(const Options &opt)
 	config.maxHeight = maxH;
 	config.resize = opt.resize;
 	config.disableNms = opt.noNms;
+	config.boxVoting = !opt.noBoxVoting;
 	CameraModel camera;
 	if (!opt.calibPath.empty()) {
 		std::vector<uint8_t> text;

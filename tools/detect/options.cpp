@@ -61,6 +61,7 @@ const char *usageText()
 	       "  --method M          generic (default) or calibrated (needs --calib)\n"
 	       "  --min-height H      smallest plausible person, metres (default 1.4)\n"
 	       "  --max-height H      tallest plausible person, metres (default 2.2)\n"
+	       "  --no-box-voting     calibrated: keep the best window's box (the thesis's)\n"
 	       "  --quiet             no progress or summary on standard error\n"
 	       "  -h, --help          show this help\n"
 	       "\n"
@@ -100,12 +101,12 @@ bool parseOptions(int argc, const char *const *argv, Options &out, std::string &
 			inlineValue = true;
 		}
 
-		if (name == "--no-nms" || name == "--quiet") {
+		if (name == "--no-nms" || name == "--quiet" || name == "--no-box-voting") {
 			if (inlineValue) {
 				error = name + " takes no value";
 				return false;
 			}
-			(name == "--no-nms" ? out.noNms : out.quiet) = true;
+			(name == "--no-nms" ? out.noNms : name == "--quiet" ? out.quiet : out.noBoxVoting) = true;
 			continue;
 		}
 

@@ -51,6 +51,10 @@ struct DetectorConfig {
 	int denseRegionPersistence = 1;
 	// Capacity for dense regions; regions beyond it are not created, and counted.
 	int maxDenseRegions = 256;
+	// Calibrated mode, beyond the thesis: after suppression, each box moves to the
+	// score^4-weighted mean of the windows overlapping it (IoU > 0.6), which places it
+	// better than the single best window (docs/calibrated.md). Off: the thesis's boxes.
+	bool boxVoting = true;
 };
 
 // One detection in input-image pixels: top-left corner, size, classifier score. With a

@@ -330,6 +330,8 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	const bool useUnion = params_.nmsOverlapDenominator == NmsOverlapDenominator::Union;
 	int kept = nmsGreedy(candidates_.data(), candidateCount_, overlap, useUnion, order_.data(),
 			     sorted_.data());
+	if (calibrated && !config.disableNms && config.boxVoting)
+		voteBoxes(candidates_.data(), kept, sorted_.data(), candidateCount_, 0.6f);
 	if (calibrated && !config.disableNms)
 		kept = suppressByScoreRatio(candidates_.data(), kept, order_.data());
 	if (hasCamera_)

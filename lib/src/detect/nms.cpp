@@ -87,4 +87,33 @@ int suppressByScoreRatio(Detection *boxes, int n, int *keep)
 	return compact(boxes, keep, n, boxes);
 }
 
+void voteBoxes(Detection *kept, int nKept, const Detection *candidates, int nCandidates,
+	       float minIou)
+{
+	for (int i = 0; i < nKept; i++) {
+		Detection &k = kept[i];
+		double sum = 0, x = 0, y = 0, w = 0, h = 0;
+		for (int j = 0; j < nCandidates; j++) {
+			const Detection &c = candidates[j];
+			if (c.score <= 0)
+				continue;
+			const float inter = intersection(k, c);
+			if (inter <= 0 || inter / (k.w * k.h + c.w * c.h - inter) <= minIou)
+				continue;
+			const double s2 = double(c.score) * c.score, weight = s2 * s2;
+			sum += weight;
+			x += weight * c.x;
+			y += weight * c.y;
+			w += weight * c.w;
+			h += weight * c.h;
+		}
+		if (sum <= 0)
+			continue;
+		k.x = float(x / sum);
+		k.y = float(y / sum);
+		k.w = float(w / sum);
+		k.h = float(h / sum);
+	}
+}
+
 } // namespace calped

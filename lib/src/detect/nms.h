@@ -18,4 +18,12 @@ int nmsGreedy(Detection *boxes, int n, float overlap, bool useUnion, int *order,
 // exceeds the ratio of their scores. keep is scratch of n ints. Returns the boxes kept.
 int suppressByScoreRatio(Detection *boxes, int n, int *keep);
 
+// Box voting (Gidaris and Komodakis, ICCV 2015): each kept box becomes the mean of the
+// candidates overlapping it at IoU > minIou (itself included), weighted by score^4;
+// candidates scoring <= 0 weigh nothing. Scores are unchanged. The greedy NMS keeps the
+// best-scoring window, whose position the classifier knows only to a few pixels; its
+// strong neighbours agree on where the person is.
+void voteBoxes(Detection *kept, int nKept, const Detection *candidates, int nCandidates,
+	       float minIou);
+
 } // namespace calped
