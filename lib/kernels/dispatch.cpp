@@ -103,5 +103,41 @@ int availableKernelTables(const KernelTable *out[], int capacity)
 	return n;
 }
 
+
+// ==== camera pixel formats -> RGB8 (issue 5) ===========================================
+const ConvertKernels &referenceConvertKernels()
+{
+	static const ConvertKernels table = {
+		"ref", bgr8ToRgb8_ref, gray8ToRgb8_ref, yuv420ToRgb8_ref, yuyvToRgb8_ref, bayerToRgb8_ref,
+	};
+	return table;
+}
+
+namespace {
+
+// Optimised versions only where callgrind showed they pay (docs/pixel-formats.md).
+const ConvertKernels &portableConvertKernels()
+{
+	static const ConvertKernels table = {
+		"opt", bgr8ToRgb8_ref, gray8ToRgb8_ref, yuv420ToRgb8_opt, yuyvToRgb8_opt, bayerToRgb8_opt,
+	};
+	return table;
+}
+
+} // namespace
+
+const ConvertKernels &bestConvertKernels() { return portableConvertKernels(); }
+
+int availableConvertKernels(const ConvertKernels *out[], int capacity)
+{
+	const ConvertKernels *all[] = { &referenceConvertKernels(), &portableConvertKernels() };
+	int n = 0;
+	for (const ConvertKernels *t : all)
+		if (n < capacity)
+			out[n++] = t;
+	return n;
+}
+// ==== end of camera pixel formats ========================================================
+
 } // namespace kernels
 } // namespace calped

@@ -102,10 +102,10 @@ Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
 	return Status::success();
 }
 
-Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
-		      const bool *levelNeeded)
+Status Pyramid::build(FrameInput &input, const bool *levelNeeded)
 {
 	const auto t0 = Clock::now();
+	const int width = input.width(), height = input.height();
 	if (!luv_[0].fits(width, height))
 		return Status::error(ErrorCode::ImageTooLarge,
 				     "%dx%d is larger than the pyramid was set up for", width, height);
@@ -129,8 +129,15 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width, height);
-	k_->rgbToLuv(luvTables_, rgb, stride, width, height, luv[0].data, luv[1].data,
-			      luv[2].data, luv[0].stride);
+	// A strip of RGB rows at a time (the whole frame at once when it is RGB8 already).
+	const int strip = input.stripRows();
+	for (int y0 = 0; y0 < height; y0 += strip) {
+		const int rows = std::min(strip, height - y0);
+		ptrdiff_t stride;
+		const uint8_t *rgb = input.rows(y0, rows, stride);
+		k_->rgbToLuv(luvTables_, rgb, stride, width, rows, luv[0].row(y0), luv[1].row(y0),
+			     luv[2].row(y0), luv[0].stride);
+	}
 
 	// Computed levels, from the largest: each is resampled from the whole image, or
 	// from the half-size image once that exists (as the toolbox does).

@@ -9,6 +9,7 @@
 #include <calped/status.h>
 
 #include "channels/channel_computer.h"
+#include "channels/frame_input.h"
 #include "core/plane.h"
 #include "kernels.h"
 #include "pyramid/scales.h"
@@ -32,11 +33,18 @@ public:
 	Status init(const ModelParams &params, int maxWidth, int maxHeight,
 		    const kernels::KernelTable &k = kernels::bestKernels());
 
-	// Colour conversion and channels of the computed levels for one RGB8 image: all of
-	// them, or (levelNeeded non-null, one flag per level of scales()) only those some
-	// needed level is or is approximated from.
+	// Colour conversion and channels of the computed levels for one image, read from
+	// `input` a strip of RGB8 rows at a time: all of them, or (levelNeeded non-null, one
+	// flag per level of scales()) only those some needed level is or is approximated from.
+	Status build(FrameInput &input, const bool *levelNeeded = nullptr);
+	// The same for an RGB8 image in memory.
 	Status build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
-		     const bool *levelNeeded = nullptr);
+		     const bool *levelNeeded = nullptr)
+	{
+		FrameInput input;
+		input.begin(ImageView::rgb8(rgb, width, height, int(stride)));
+		return build(input, levelNeeded);
+	}
 
 	// The scale list build() will use for an image of this size (for setup).
 	Status scalesFor(int width, int height, ScaleList &out) const;

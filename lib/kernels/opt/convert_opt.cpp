@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Camera pixel formats -> RGB8, restructured for speed; bit-identical to ref/convert_ref.cpp.
+// YUV: the chroma terms are computed once per pair of pixels sharing them. Bayer: rows
+// are mirrored once per row and columns only at the two border pixels, and the interior
+// goes two pixels (one 2x2-block column) at a time with the site types fixed per row.
+#include "kernels.h"
+
+namespace calped {
+namespace kernels {
+
+namespace {
+
+inline uint8_t clamp255(int32_t v) { return uint8_t(v < 0 ? 0 : (v > 255 ? 255 : v)); }
+
+// Chroma terms of one U, V pair, added to c.y * (Y - yOffset) + 128 before the shift.
+struct Chroma {
+	int32_t r, g, b;
+};
+
+inline Chroma chromaTerms(const YuvCoeffs &c, int u, int v)
+{
+	const int32_t d = u - 128, e = v - 128;
+	return { c.rv * e, -c.gu * d - c.gv * e, c.bu * d };
+}
+
+inline void yuvPixel(const YuvCoeffs &c, const Chroma &k, int y, uint8_t *rgb)
+{
+	const int32_t luma = c.y * (y - c.yOffset) + 128;
+	rgb[0] = clamp255((luma + k.r) >> 8);
+	rgb[1] = clamp255((luma + k.g) >> 8);
+	rgb[2] = clamp255((luma + k.b) >> 8);
+}
+
+} // namespace
+
+void yuv420ToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride)
+{
+	const YuvCoeffs c = f.yuv;
+	const int step = f.chromaStep, pairs = f.width / 2;
+	for (int y = y0; y < y0 + rows; y++) {
+		const uint8_t *luma = f.planes[0] + y * f.strides[0];
+		const uint8_t *u = f.planes[1] + (y / 2) * f.strides[1];
+		const uint8_t *v = f.planes[2] + (y / 2) * f.strides[2];
+		uint8_t *d = dst + (y - y0) * dstStride;
+		for (int p = 0; p < pairs; p++) {
+			const Chroma k = chromaTerms(c, u[p * step], v[p * step]);
+			yuvPixel(c, k, luma[2 * p], d + 6 * p);
+			yuvPixel(c, k, luma[2 * p + 1], d + 6 * p + 3);
+		}
+		if (f.width & 1)
+			yuvPixel(c, chromaTerms(c, u[pairs * step], v[pairs * step]), luma[2 * pairs],
+				 d + 6 * pairs);
+	}
+}
+
+void yuyvToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride)
+{
+	const YuvCoeffs c = f.yuv;
+	const int pairs = f.width / 2;
+	for (int y = y0; y < y0 + rows; y++) {
+		const uint8_t *s = f.planes[0] + y * f.strides[0];
+		uint8_t *d = dst + (y - y0) * dstStride;
+		for (int p = 0; p < pairs; p++) {
+			const uint8_t *q = s + 4 * p;
+			const Chroma k = chromaTerms(c, q[1], q[3]);
+			yuvPixel(c, k, q[0], d + 6 * p);
+			yuvPixel(c, k, q[2], d + 6 * p + 3);
+		}
+		if (f.width & 1) {
+			const uint8_t *q = s + 4 * pairs;
+			yuvPixel(c, chromaTerms(c, q[1], q[3]), q[0], d + 6 * pairs);
+		}
+	}
+}
+
+namespace {
+
+// The four kinds of Bayer site (see bayerToRgb8_ref).
+enum Site { RedSite, BlueSite, GreenInRedRow, GreenInBlueRow };
+
+// Pixel at column x of row c, with row u above and row b below; l and r are the columns
+// left and right of x (mirrored at the borders).
+template <Site site>
+inline void demosaic(const uint8_t *u, const uint8_t *c, const uint8_t *b, int l, int x, int r,
+		     uint8_t *out)
+{
+	const int here = c[x];
+	if (site == RedSite || site == BlueSite) {
+		const int cross = (c[l] + c[r] + u[x] + b[x] + 2) >> 2;
+		const int diagonal = (u[l] + u[r] + b[l] + b[r] + 2) >> 2;
+		out[0] = uint8_t(site == RedSite ? here : diagonal);
+		out[1] = uint8_t(cross);
+		out[2] = uint8_t(site == RedSite ? diagonal : here);
+	} else {
+		const int across = (c[l] + c[r] + 1) >> 1;
+		const int vertical = (u[x] + b[x] + 1) >> 1;
+		out[0] = uint8_t(site == GreenInRedRow ? across : vertical);
+		out[1] = uint8_t(here);
+		out[2] = uint8_t(site == GreenInRedRow ? vertical : across);
+	}
+}
+
+template <Site even, Site odd>
+void demosaicRow(const uint8_t *u, const uint8_t *c, const uint8_t *b, int w, uint8_t *d)
+{
+	// Column 0 mirrors its left neighbour to column 1; column w - 1 its right to w - 2.
+	demosaic<even>(u, c, b, 1, 0, 1, d);
+	int x = 1;
+	for (; x + 1 < w - 1; x += 2) {
+		demosaic<odd>(u, c, b, x - 1, x, x + 1, d + 3 * x);
+		demosaic<even>(u, c, b, x, x + 1, x + 2, d + 3 * x + 3);
+	}
+	for (; x < w; x++) {
+		const int l = x - 1, r = x + 1 < w ? x + 1 : w - 2;
+		if (x & 1)
+			demosaic<odd>(u, c, b, l, x, r, d + 3 * x);
+		else
+			demosaic<even>(u, c, b, l, x, r, d + 3 * x);
+	}
+}
+
+} // namespace
+
+void bayerToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride)
+{
+	const int w = f.width, h = f.height;
+	for (int y = y0; y < y0 + rows; y++) {
+		const int above = y > 0 ? y - 1 : 1, below = y + 1 < h ? y + 1 : h - 2;
+		const uint8_t *u = f.planes[0] + above * f.strides[0];
+		const uint8_t *c = f.planes[0] + y * f.strides[0];
+		const uint8_t *b = f.planes[0] + below * f.strides[0];
+		uint8_t *d = dst + (y - y0) * dstStride;
+		const bool redRow = (y & 1) == f.redY;
+		// Site of the even columns, then of the odd ones.
+		if (redRow && f.redX == 0)
+			demosaicRow<RedSite, GreenInRedRow>(u, c, b, w, d);
+		else if (redRow)
+			demosaicRow<GreenInRedRow, RedSite>(u, c, b, w, d);
+		else if (f.redX == 0)
+			demosaicRow<GreenInBlueRow, BlueSite>(u, c, b, w, d);
+		else
+			demosaicRow<BlueSite, GreenInBlueRow>(u, c, b, w, d);
+	}
+}
+
+} // namespace kernels
+} // namespace calped
