@@ -230,8 +230,9 @@ Status DetectorImpl::checkImage(const ImageView &image) const
 		return layout;
 	if (image.width > config.maxWidth || image.height > config.maxHeight)
 		return Status::error(ErrorCode::ImageTooLarge,
-				     "image %dx%d exceeds the configured maximum %dx%d", image.width,
-				     image.height, config.maxWidth, config.maxHeight);
+				     "%s image %dx%d exceeds the configured maximum %dx%d",
+				     pixelFormatName(image.format), image.width, image.height,
+				     config.maxWidth, config.maxHeight);
 	// World coordinates (and the calibrated plan) hold for the calibration's frame size.
 	if (hasCamera_ && (image.width != config.maxWidth || image.height != config.maxHeight))
 		return Status::error(ErrorCode::InvalidArgument,
