@@ -124,17 +124,40 @@ const ConvertKernels &portableConvertKernels()
 	return table;
 }
 
+#if CALPED_HAVE_AVX2
+const ConvertKernels &avx2ConvertKernels()
+{
+	static const ConvertKernels table = {
+		"avx2", bgr8ToRgb8_avx2, gray8ToRgb8_avx2, yuv420ToRgb8_avx2, yuyvToRgb8_avx2, bayerToRgb8_opt,
+	};
+	return table;
+}
+#endif
+
 } // namespace
 
-const ConvertKernels &bestConvertKernels() { return portableConvertKernels(); }
+const ConvertKernels &bestConvertKernels()
+{
+#if CALPED_HAVE_AVX2
+	if (cpuHasAvx2())
+		return avx2ConvertKernels();
+#endif
+	return portableConvertKernels();
+}
 
 int availableConvertKernels(const ConvertKernels *out[], int capacity)
 {
-	const ConvertKernels *all[] = { &referenceConvertKernels(), &portableConvertKernels() };
 	int n = 0;
-	for (const ConvertKernels *t : all)
+	auto add = [&](const ConvertKernels &t) {
 		if (n < capacity)
-			out[n++] = t;
+			out[n++] = &t;
+	};
+	add(referenceConvertKernels());
+	add(portableConvertKernels());
+#if CALPED_HAVE_AVX2
+	if (cpuHasAvx2())
+		add(avx2ConvertKernels());
+#endif
 	return n;
 }
 // ==== end of camera pixel formats ========================================================

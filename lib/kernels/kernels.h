@@ -278,14 +278,18 @@ using ConvertRowsFn = void (*)(const RawFrame &f, int y0, int rows, uint8_t *dst
 			       ptrdiff_t dstStride);
 // B G R -> R G B.
 void bgr8ToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void bgr8ToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 // R = G = B = the sample.
 void gray8ToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void gray8ToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 // 4:2:0 (NV12, I420): pixel (x, y) takes chroma sample (x / 2, y / 2).
 void yuv420ToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 void yuv420ToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuv420ToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 // Packed 4:2:2 Y0 U Y1 V: both pixels of a pair take the pair's U and V.
 void yuyvToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 void yuyvToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuyvToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 // Bilinear demosaicing, borders mirrored (sample -1 is sample 1); width, height >= 2.
 void bayerToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 void bayerToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);

@@ -159,6 +159,8 @@ TEST(PixelFormats, CameraFormatsMatchTheirReferenceConversionSynthetic)
 	for (double resize : { 1.0, 2.0 }) {
 		auto det = syntheticDetector(resize);
 		for (auto [w, h] : { std::pair{ 320, 240 }, { 201, 153 } }) {
+			if (resize != 1.0 && w == 320)
+				continue; // the whole-frame path once, at the odd size (keeps the test short)
 			const auto img = test::randomImage(22, w, h);
 			for (PixelFormat f : kCameraFormats)
 				for (int e = 0; e < 4; e++) {

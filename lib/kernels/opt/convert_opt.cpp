@@ -3,74 +3,23 @@
 // YUV: the chroma terms are computed once per pair of pixels sharing them. Bayer: rows
 // are mirrored once per row and columns only at the two border pixels, and the interior
 // goes two pixels (one 2x2-block column) at a time with the site types fixed per row.
-#include "kernels.h"
+#include "opt/convert_body.h"
 
 namespace calped {
 namespace kernels {
 
-namespace {
-
-inline uint8_t clamp255(int32_t v) { return uint8_t(v < 0 ? 0 : (v > 255 ? 255 : v)); }
-
-// Chroma terms of one U, V pair, added to c.y * (Y - yOffset) + 128 before the shift.
-struct Chroma {
-	int32_t r, g, b;
-};
-
-inline Chroma chromaTerms(const YuvCoeffs &c, int u, int v)
-{
-	const int32_t d = u - 128, e = v - 128;
-	return { c.rv * e, -c.gu * d - c.gv * e, c.bu * d };
-}
-
-inline void yuvPixel(const YuvCoeffs &c, const Chroma &k, int y, uint8_t *rgb)
-{
-	const int32_t luma = c.y * (y - c.yOffset) + 128;
-	rgb[0] = clamp255((luma + k.r) >> 8);
-	rgb[1] = clamp255((luma + k.g) >> 8);
-	rgb[2] = clamp255((luma + k.b) >> 8);
-}
-
-} // namespace
-
 void yuv420ToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride)
 {
-	const YuvCoeffs c = f.yuv;
-	const int step = f.chromaStep, pairs = f.width / 2;
-	for (int y = y0; y < y0 + rows; y++) {
-		const uint8_t *luma = f.planes[0] + y * f.strides[0];
-		const uint8_t *u = f.planes[1] + (y / 2) * f.strides[1];
-		const uint8_t *v = f.planes[2] + (y / 2) * f.strides[2];
-		uint8_t *d = dst + (y - y0) * dstStride;
-		for (int p = 0; p < pairs; p++) {
-			const Chroma k = chromaTerms(c, u[p * step], v[p * step]);
-			yuvPixel(c, k, luma[2 * p], d + 6 * p);
-			yuvPixel(c, k, luma[2 * p + 1], d + 6 * p + 3);
-		}
-		if (f.width & 1)
-			yuvPixel(c, chromaTerms(c, u[pairs * step], v[pairs * step]), luma[2 * pairs],
-				 d + 6 * pairs);
-	}
+	for (int y = y0; y < y0 + rows; y++)
+		yuv420RowTail(f.yuv, f.planes[0] + y * f.strides[0], f.planes[1] + (y / 2) * f.strides[1],
+			      f.planes[2] + (y / 2) * f.strides[2], f.chromaStep, 0, f.width,
+			      dst + (y - y0) * dstStride);
 }
 
 void yuyvToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride)
 {
-	const YuvCoeffs c = f.yuv;
-	const int pairs = f.width / 2;
-	for (int y = y0; y < y0 + rows; y++) {
-		const uint8_t *s = f.planes[0] + y * f.strides[0];
-		uint8_t *d = dst + (y - y0) * dstStride;
-		for (int p = 0; p < pairs; p++) {
-			const uint8_t *q = s + 4 * p;
-			const Chroma k = chromaTerms(c, q[1], q[3]);
-			yuvPixel(c, k, q[0], d + 6 * p);
-			yuvPixel(c, k, q[2], d + 6 * p + 3);
-		}
-		if (f.width & 1) {
-			const uint8_t *q = s + 4 * pairs;
-			yuvPixel(c, chromaTerms(c, q[1], q[3]), q[0], d + 6 * pairs);
-		}
-	}
+	for (int y = y0; y < y0 + rows; y++)
+		yuyvRowTail(f.yuv, f.planes[0] + y * f.strides[0], 0, f.width, dst + (y - y0) * dstStride);
 }
 
 namespace {
