@@ -128,7 +128,7 @@ const ConvertKernels &portableConvertKernels()
 const ConvertKernels &avx2ConvertKernels()
 {
 	static const ConvertKernels table = {
-		"avx2", bgr8ToRgb8_avx2, gray8ToRgb8_avx2, yuv420ToRgb8_avx2, yuyvToRgb8_avx2, bayerToRgb8_opt,
+		"avx2", bgr8ToRgb8_avx2, gray8ToRgb8_avx2, yuv420ToRgb8_avx2, yuyvToRgb8_avx2, bayerToRgb8_avx2,
 	};
 	return table;
 }

@@ -293,6 +293,7 @@ void yuyvToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_
 // Bilinear demosaicing, borders mirrored (sample -1 is sample 1); width, height >= 2.
 void bayerToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 void bayerToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void bayerToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 
 // The conversion kernels one pipeline uses (a table of their own, so the main
 // KernelTable and its ISA-specific tables stay untouched).

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Scalar YUV -> RGB pieces shared by the optimised conversions (opt/ and the x86 tails),
-// the reference's formula with the chroma terms computed once per shared sample.
+// Scalar pieces shared by the optimised conversions (opt/ and the x86 tails): YUV with the
+// chroma terms computed once per shared sample, and Bayer sites with fixed types.
 #pragma once
 
 #include "kernels.h"
@@ -56,6 +56,45 @@ inline void yuyvRowTail(const YuvCoeffs &c, const uint8_t *s, int x0, int width,
 	}
 	if (x < width) // odd width: the last pair has one pixel
 		yuvPixel(c, chromaTerms(c, s[2 * x + 1], s[2 * x + 3]), s[2 * x], d + 3 * x);
+}
+
+// The four kinds of Bayer site (see bayerToRgb8_ref).
+enum Site { RedSite, BlueSite, GreenInRedRow, GreenInBlueRow };
+
+// Pixel at column x of row c, with row u above and row b below; l and r are the columns
+// left and right of x (mirrored at the borders).
+template <Site site>
+inline void demosaic(const uint8_t *u, const uint8_t *c, const uint8_t *b, int l, int x, int r,
+		     uint8_t *out)
+{
+	const int here = c[x];
+	if (site == RedSite || site == BlueSite) {
+		const int cross = (c[l] + c[r] + u[x] + b[x] + 2) >> 2;
+		const int diagonal = (u[l] + u[r] + b[l] + b[r] + 2) >> 2;
+		out[0] = uint8_t(site == RedSite ? here : diagonal);
+		out[1] = uint8_t(cross);
+		out[2] = uint8_t(site == RedSite ? diagonal : here);
+	} else {
+		const int across = (c[l] + c[r] + 1) >> 1;
+		const int vertical = (u[x] + b[x] + 1) >> 1;
+		out[0] = uint8_t(site == GreenInRedRow ? across : vertical);
+		out[1] = uint8_t(here);
+		out[2] = uint8_t(site == GreenInRedRow ? vertical : across);
+	}
+}
+
+// Pixels [x0, w) of a row (x0 >= 1), the last one mirroring its right neighbour.
+template <Site even, Site odd>
+inline void demosaicTail(const uint8_t *u, const uint8_t *c, const uint8_t *b, int x0, int w,
+			 uint8_t *d)
+{
+	for (int x = x0; x < w; x++) {
+		const int l = x - 1, r = x + 1 < w ? x + 1 : w - 2;
+		if (x & 1)
+			demosaic<odd>(u, c, b, l, x, r, d + 3 * x);
+		else
+			demosaic<even>(u, c, b, l, x, r, d + 3 * x);
+	}
 }
 
 } // namespace

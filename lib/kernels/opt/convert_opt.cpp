@@ -24,31 +24,6 @@ void yuyvToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t
 
 namespace {
 
-// The four kinds of Bayer site (see bayerToRgb8_ref).
-enum Site { RedSite, BlueSite, GreenInRedRow, GreenInBlueRow };
-
-// Pixel at column x of row c, with row u above and row b below; l and r are the columns
-// left and right of x (mirrored at the borders).
-template <Site site>
-inline void demosaic(const uint8_t *u, const uint8_t *c, const uint8_t *b, int l, int x, int r,
-		     uint8_t *out)
-{
-	const int here = c[x];
-	if (site == RedSite || site == BlueSite) {
-		const int cross = (c[l] + c[r] + u[x] + b[x] + 2) >> 2;
-		const int diagonal = (u[l] + u[r] + b[l] + b[r] + 2) >> 2;
-		out[0] = uint8_t(site == RedSite ? here : diagonal);
-		out[1] = uint8_t(cross);
-		out[2] = uint8_t(site == RedSite ? diagonal : here);
-	} else {
-		const int across = (c[l] + c[r] + 1) >> 1;
-		const int vertical = (u[x] + b[x] + 1) >> 1;
-		out[0] = uint8_t(site == GreenInRedRow ? across : vertical);
-		out[1] = uint8_t(here);
-		out[2] = uint8_t(site == GreenInRedRow ? vertical : across);
-	}
-}
-
 template <Site even, Site odd>
 void demosaicRow(const uint8_t *u, const uint8_t *c, const uint8_t *b, int w, uint8_t *d)
 {
@@ -59,13 +34,7 @@ void demosaicRow(const uint8_t *u, const uint8_t *c, const uint8_t *b, int w, ui
 		demosaic<odd>(u, c, b, x - 1, x, x + 1, d + 3 * x);
 		demosaic<even>(u, c, b, x, x + 1, x + 2, d + 3 * x + 3);
 	}
-	for (; x < w; x++) {
-		const int l = x - 1, r = x + 1 < w ? x + 1 : w - 2;
-		if (x & 1)
-			demosaic<odd>(u, c, b, l, x, r, d + 3 * x);
-		else
-			demosaic<even>(u, c, b, l, x, r, d + 3 * x);
-	}
+	demosaicTail<even, odd>(u, c, b, x, w, d);
 }
 
 } // namespace

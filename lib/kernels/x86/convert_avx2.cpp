@@ -3,7 +3,8 @@
 // the same int32 sums, an arithmetic shift (floor), and the clamp to 0..255 done by the
 // saturating packs (after the shift every value lies within -300..600, inside int16).
 // Pixels after the last whole group of eight go through the scalar opt code. BGR8 and
-// Gray8 are byte shuffles.
+// Gray8 are byte shuffles. Bayer: sixteen pixels at a time in 16-bit lanes, every
+// neighbour sum computed for all of them and each channel picked per site.
 #include <immintrin.h>
 
 #include <cstring>
@@ -146,6 +147,93 @@ void gray8ToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff
 		}
 		for (; x < f.width; x++)
 			d[3 * x + 0] = d[3 * x + 1] = d[3 * x + 2] = s[x];
+	}
+}
+
+namespace {
+
+// The channel c (0 R, 1 G, 2 B) of a Bayer site from the neighbour sums (bayerToRgb8_ref).
+template <Site site>
+inline __m256i siteChannel(int c, __m256i here, __m256i cross, __m256i diagonal, __m256i across,
+			   __m256i vertical)
+{
+	switch (site) {
+	case RedSite: return c == 0 ? here : (c == 1 ? cross : diagonal);
+	case BlueSite: return c == 0 ? diagonal : (c == 1 ? cross : here);
+	case GreenInRedRow: return c == 0 ? across : (c == 1 ? here : vertical);
+	default: return c == 0 ? vertical : (c == 1 ? here : across);
+	}
+}
+
+inline __m256i load16(const uint8_t *p)
+{
+	return _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i *>(p)));
+}
+
+template <Site even, Site odd>
+void demosaicRowAvx2(const uint8_t *u, const uint8_t *c, const uint8_t *b, int w, uint8_t *d)
+{
+	demosaic<even>(u, c, b, 1, 0, 1, d); // column 0 mirrors column -1 to 1
+	// Groups start at odd columns: lane j holds column x + j, even when j is odd.
+	const __m256i evenLanes = _mm256_setr_epi16(0, -1, 0, -1, 0, -1, 0, -1, 0, -1, 0, -1, 0, -1, 0, -1);
+	const __m256i two = _mm256_set1_epi16(2), one = _mm256_set1_epi16(1);
+	const __m128i rg0 = _mm_setr_epi8(0, 8, -1, 1, 9, -1, 2, 10, -1, 3, 11, -1, 4, 12, -1, 5);
+	const __m128i b0 = _mm_setr_epi8(-1, -1, 0, -1, -1, 1, -1, -1, 2, -1, -1, 3, -1, -1, 4, -1);
+	const __m128i rg1 = _mm_setr_epi8(13, -1, 6, 14, -1, 7, 15, -1, -1, -1, -1, -1, -1, -1, -1, -1);
+	const __m128i b1 = _mm_setr_epi8(-1, 5, -1, -1, 6, -1, -1, 7, -1, -1, -1, -1, -1, -1, -1, -1);
+	int x = 1;
+	for (; x + 17 <= w; x += 16) { // reads columns x - 1 .. x + 16
+		const __m256i cl = load16(c + x - 1), here = load16(c + x), cr = load16(c + x + 1);
+		const __m256i ul = load16(u + x - 1), ux = load16(u + x), ur = load16(u + x + 1);
+		const __m256i bl = load16(b + x - 1), bx = load16(b + x), br = load16(b + x + 1);
+		const __m256i horizontal = _mm256_add_epi16(cl, cr), vSum = _mm256_add_epi16(ux, bx);
+		const __m256i cross = _mm256_srli_epi16(
+			_mm256_add_epi16(_mm256_add_epi16(horizontal, vSum), two), 2);
+		const __m256i diagonal = _mm256_srli_epi16(
+			_mm256_add_epi16(_mm256_add_epi16(_mm256_add_epi16(ul, ur), _mm256_add_epi16(bl, br)), two), 2);
+		const __m256i across = _mm256_srli_epi16(_mm256_add_epi16(horizontal, one), 1);
+		const __m256i vertical = _mm256_srli_epi16(_mm256_add_epi16(vSum, one), 1);
+		__m256i ch[3];
+		for (int k = 0; k < 3; k++)
+			ch[k] = _mm256_blendv_epi8(siteChannel<odd>(k, here, cross, diagonal, across, vertical),
+						   siteChannel<even>(k, here, cross, diagonal, across, vertical),
+						   evenLanes);
+		// Bytes r0-7 g0-7 | r8-15 g8-15 and b0-7 twice | b8-15 twice; 24 bytes per half.
+		const __m256i rg = _mm256_packus_epi16(ch[0], ch[1]);
+		const __m256i bb = _mm256_packus_epi16(ch[2], ch[2]);
+		uint8_t *out = d + 3 * x;
+		for (int half = 0; half < 2; half++) {
+			const __m128i rgh = half ? _mm256_extracti128_si256(rg, 1) : _mm256_castsi256_si128(rg);
+			const __m128i bbh = half ? _mm256_extracti128_si256(bb, 1) : _mm256_castsi256_si128(bb);
+			_mm_storeu_si128(reinterpret_cast<__m128i *>(out + 24 * half),
+					 _mm_or_si128(_mm_shuffle_epi8(rgh, rg0), _mm_shuffle_epi8(bbh, b0)));
+			_mm_storel_epi64(reinterpret_cast<__m128i *>(out + 24 * half + 16),
+					 _mm_or_si128(_mm_shuffle_epi8(rgh, rg1), _mm_shuffle_epi8(bbh, b1)));
+		}
+	}
+	demosaicTail<even, odd>(u, c, b, x, w, d);
+}
+
+} // namespace
+
+void bayerToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride)
+{
+	const int w = f.width, h = f.height;
+	for (int y = y0; y < y0 + rows; y++) {
+		const int above = y > 0 ? y - 1 : 1, below = y + 1 < h ? y + 1 : h - 2;
+		const uint8_t *u = f.planes[0] + above * f.strides[0];
+		const uint8_t *c = f.planes[0] + y * f.strides[0];
+		const uint8_t *b = f.planes[0] + below * f.strides[0];
+		uint8_t *d = dst + (y - y0) * dstStride;
+		const bool redRow = (y & 1) == f.redY;
+		if (redRow && f.redX == 0)
+			demosaicRowAvx2<RedSite, GreenInRedRow>(u, c, b, w, d);
+		else if (redRow)
+			demosaicRowAvx2<GreenInRedRow, RedSite>(u, c, b, w, d);
+		else if (f.redX == 0)
+			demosaicRowAvx2<GreenInBlueRow, BlueSite>(u, c, b, w, d);
+		else
+			demosaicRowAvx2<BlueSite, GreenInBlueRow>(u, c, b, w, d);
 	}
 }
 
