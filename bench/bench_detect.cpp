@@ -3,7 +3,9 @@
 // decoded first, then each is detected `--repeat` times; prints median and mean per
 // stage. Usage:
 //   bench_detect --model BLOB --frames DIR [--resize R] [--count N] [--repeat K]
-//                [--calib FILE [--calibrated]]
+//                [--calib FILE [--calibrated]] [--format NAME]
+// --format converts the decoded frames to a camera pixel format first (NV12, YUYV,
+// BayerRGGB8, ...: docs/pixel-formats.md), so the detector's input conversion is timed.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +16,7 @@
 
 #include <calped/calped.h>
 
+#include "pixel_formats.h"
 #include "test_data.h"
 
 using namespace calped;
@@ -40,7 +43,7 @@ double mean(const std::vector<double> &v)
 int usage()
 {
 	std::fprintf(stderr, "usage: bench_detect --model BLOB --frames DIR [--resize R] [--count N] "
-			     "[--repeat K] [--calib FILE [--calibrated]]\n");
+			     "[--repeat K] [--calib FILE [--calibrated]] [--format NAME]\n");
 	return 2;
 }
 
@@ -48,7 +51,7 @@ int usage()
 
 int main(int argc, char **argv)
 {
-	std::string modelPath, framesDir, calibPath;
+	std::string modelPath, framesDir, calibPath, formatName = "RGB8";
 	double resize = 1.0;
 	int count = 50, repeat = 1;
 	bool calibrated = false;
@@ -72,11 +75,24 @@ int main(int argc, char **argv)
 			repeat = std::atoi(argv[++i]);
 		else if (a == "--calib")
 			calibPath = argv[++i];
+		else if (a == "--format")
+			formatName = argv[++i];
 		else
 			return usage();
 	}
 	if (modelPath.empty() || framesDir.empty() || count < 1 || repeat < 1)
 		return usage();
+	PixelFormat format = PixelFormat::RGB8;
+	bool formatKnown = false;
+	for (int f = int(PixelFormat::RGB8); f <= int(PixelFormat::BayerBGGR8); f++)
+		if (formatName == pixelFormatName(PixelFormat(f))) {
+			format = PixelFormat(f);
+			formatKnown = true;
+		}
+	if (!formatKnown) {
+		std::fprintf(stderr, "bench_detect: unknown pixel format %s\n", formatName.c_str());
+		return 2;
+	}
 
 	std::vector<uint8_t> blob;
 	Model model;
@@ -111,6 +127,10 @@ int main(int argc, char **argv)
 		return 1;
 	}
 
+	std::vector<test::FormattedImage> inputs;
+	for (const auto &f : frames)
+		inputs.push_back(test::encodeImage(f.pixels.data(), f.width, f.height, format));
+
 	DetectorConfig cfg;
 	cfg.maxWidth = frames[0].width;
 	cfg.maxHeight = frames[0].height;
@@ -143,10 +163,10 @@ int main(int argc, char **argv)
 	uint64_t windows = 0, detections = 0;
 	int levels = 0, computed = 0;
 	Detections out;
-	det->detect(ImageView::rgb8(frames[0].pixels.data(), frames[0].width, frames[0].height), out); // warm-up
+	det->detect(inputs[0].view(), out); // warm-up
 	for (int r = 0; r < repeat; r++)
-		for (const auto &f : frames) {
-			st = det->detect(ImageView::rgb8(f.pixels.data(), f.width, f.height), out);
+		for (const auto &f : inputs) {
+			st = det->detect(f.view(), out);
 			if (!st.ok()) {
 				std::fprintf(stderr, "bench_detect: %s\n", st.message());
 				return 1;
@@ -164,8 +184,8 @@ int main(int argc, char **argv)
 			computed = s.computedLevels;
 		}
 	const double n = double(total.size());
-	std::printf("%s, frames %zu x %d, %dx%d, resize %.2f: %d levels (%d computed), %.0f windows/frame, %.2f detections/frame\n",
-		    calibrated ? "calibrated" : "generic", frames.size(), repeat, frames[0].width,
+	std::printf("%s %s, frames %zu x %d, %dx%d, resize %.2f: %d levels (%d computed), %.0f windows/frame, %.2f detections/frame\n",
+		    calibrated ? "calibrated" : "generic", pixelFormatName(format), frames.size(), repeat, frames[0].width,
 		    frames[0].height, resize, levels, computed,
 		    windows / n, detections / n);
 	std::printf("ms per frame      median   mean\n");

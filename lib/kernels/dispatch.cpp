@@ -103,5 +103,64 @@ int availableKernelTables(const KernelTable *out[], int capacity)
 	return n;
 }
 
+
+// ==== camera pixel formats -> RGB8 (issue 5) ===========================================
+const ConvertKernels &referenceConvertKernels()
+{
+	static const ConvertKernels table = {
+		"ref", bgr8ToRgb8_ref, gray8ToRgb8_ref, yuv420ToRgb8_ref, yuyvToRgb8_ref, bayerToRgb8_ref,
+	};
+	return table;
+}
+
+namespace {
+
+// Optimised versions only where callgrind showed they pay (docs/pixel-formats.md).
+const ConvertKernels &portableConvertKernels()
+{
+	static const ConvertKernels table = {
+		"opt", bgr8ToRgb8_ref, gray8ToRgb8_ref, yuv420ToRgb8_opt, yuyvToRgb8_opt, bayerToRgb8_opt,
+	};
+	return table;
+}
+
+#if CALPED_HAVE_AVX2
+const ConvertKernels &avx2ConvertKernels()
+{
+	static const ConvertKernels table = {
+		"avx2", bgr8ToRgb8_avx2, gray8ToRgb8_avx2, yuv420ToRgb8_avx2, yuyvToRgb8_avx2, bayerToRgb8_avx2,
+	};
+	return table;
+}
+#endif
+
+} // namespace
+
+const ConvertKernels &bestConvertKernels()
+{
+#if CALPED_HAVE_AVX2
+	if (cpuHasAvx2())
+		return avx2ConvertKernels();
+#endif
+	return portableConvertKernels();
+}
+
+int availableConvertKernels(const ConvertKernels *out[], int capacity)
+{
+	int n = 0;
+	auto add = [&](const ConvertKernels &t) {
+		if (n < capacity)
+			out[n++] = &t;
+	};
+	add(referenceConvertKernels());
+	add(portableConvertKernels());
+#if CALPED_HAVE_AVX2
+	if (cpuHasAvx2())
+		add(avx2ConvertKernels());
+#endif
+	return n;
+}
+// ==== end of camera pixel formats ========================================================
+
 } // namespace kernels
 } // namespace calped

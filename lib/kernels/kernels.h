@@ -250,5 +250,62 @@ const KernelTable &bestKernels();
 // Every table this build and CPU can run, references first (for tests and benchmarks).
 int availableKernelTables(const KernelTable *out[], int capacity);
 
+
+// ==== camera pixel formats -> interleaved RGB8 (issue 5) ================================
+// Rows [y0, y0 + rows) of a camera frame converted to interleaved RGB8 rows of dst (row
+// y0 at dst). The exact formulas are in ref/convert_ref.cpp and docs/pixel-formats.md.
+
+// Q8 YUV -> RGB coefficients: with C = Y - yOffset, D = U - 128, E = V - 128,
+// R = clamp((y*C + rv*E + 128) >> 8), G = clamp((y*C - gu*D - gv*E + 128) >> 8),
+// B = clamp((y*C + bu*D + 128) >> 8), clamp to 0..255, >> is floor division.
+struct YuvCoeffs {
+	int32_t y, yOffset, rv, gu, gv, bu;
+};
+// BT.601 or BT.709 matrix, limited (video) or full range.
+YuvCoeffs yuvCoeffs(bool bt709, bool fullRange);
+
+// A camera frame as the conversion kernels see it (calped::ImageView, already checked).
+struct RawFrame {
+	const uint8_t *planes[3] = { nullptr, nullptr, nullptr }; // 4:2:0: Y, U, V
+	ptrdiff_t strides[3] = { 0, 0, 0 };
+	int width = 0, height = 0;
+	int chromaStep = 1;     // 4:2:0: bytes between a row's chroma samples (NV12 2, I420 1)
+	YuvCoeffs yuv = {};     // YUV formats
+	int redX = 0, redY = 0; // Bayer: column and row of red in the top-left 2x2 block
+};
+
+using ConvertRowsFn = void (*)(const RawFrame &f, int y0, int rows, uint8_t *dst,
+			       ptrdiff_t dstStride);
+// B G R -> R G B.
+void bgr8ToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void bgr8ToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+// R = G = B = the sample.
+void gray8ToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void gray8ToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+// 4:2:0 (NV12, I420): pixel (x, y) takes chroma sample (x / 2, y / 2).
+void yuv420ToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuv420ToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuv420ToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+// Packed 4:2:2 Y0 U Y1 V: both pixels of a pair take the pair's U and V.
+void yuyvToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuyvToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuyvToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+// Bilinear demosaicing, borders mirrored (sample -1 is sample 1); width, height >= 2.
+void bayerToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void bayerToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void bayerToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+
+// The conversion kernels one pipeline uses (a table of their own, so the main
+// KernelTable and its ISA-specific tables stay untouched).
+struct ConvertKernels {
+	const char *name;
+	ConvertRowsFn bgr8, gray8, yuv420, yuyv, bayer;
+};
+const ConvertKernels &referenceConvertKernels();
+const ConvertKernels &bestConvertKernels();
+// Every conversion table this build and CPU can run, references first.
+int availableConvertKernels(const ConvertKernels *out[], int capacity);
+// ==== end of camera pixel formats ==========================================================
+
 } // namespace kernels
 } // namespace calped

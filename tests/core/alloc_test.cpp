@@ -10,6 +10,7 @@
 
 #include <calped/calped.h>
 
+#include "pixel_formats.h"
 #include "synthetic.h"
 #include "test_data.h"
 
@@ -63,6 +64,28 @@ long allocationsDuring(Detector &det, const std::vector<std::vector<uint8_t>> &i
 	counting = false;
 	return allocations.load();
 }
+
+// The same for frames already in their pixel format.
+long allocationsDuring(Detector &det, const std::vector<test::FormattedImage> &images,
+		       int *detections)
+{
+	allocations = 0;
+	counting = true;
+	for (const auto &img : images) {
+		Detections d;
+		const Status st = det.detect(img.view(), d);
+		if (st.ok())
+			*detections += d.count;
+	}
+	counting = false;
+	return allocations.load();
+}
+
+const PixelFormat kAllFormats[] = { PixelFormat::RGB8,       PixelFormat::BGR8,
+				    PixelFormat::Gray8,      PixelFormat::NV12,
+				    PixelFormat::YUV420,     PixelFormat::YUYV,
+				    PixelFormat::BayerRGGB8, PixelFormat::BayerGRBG8,
+				    PixelFormat::BayerGBRG8, PixelFormat::BayerBGGR8 };
 
 } // namespace
 
@@ -155,4 +178,60 @@ TEST(BoundedMemory, DetectAllocatesNothingOnPets)
 	EXPECT_EQ(allocationsDuring(*det, frames, 768, 576, &detections), 0);
 	std::printf("PETS frames 1-3 at resize 2: %d detections, 0 allocations\n", detections);
 	EXPECT_GT(detections, 0);
+}
+
+TEST(BoundedMemory, EveryPixelFormatAllocatesNothing)
+{
+	// Strip-wise conversion at resize 1, whole-frame conversion before resize 2; full,
+	// smaller odd-sized and rejected frames of every format.
+	const Model model = test::randomModel(7, 512);
+	for (double resize : { 1.0, 2.0 }) {
+		DetectorConfig cfg;
+		cfg.maxWidth = 320;
+		cfg.maxHeight = 240;
+		cfg.resize = resize;
+		cfg.cascadeThreshold = -10.0f;
+		std::unique_ptr<Detector> det;
+		ASSERT_TRUE(Detector::create(model, cfg, det).ok());
+		const auto full = test::randomImage(1, 320, 240), small = test::randomImage(2, 201, 153),
+			   big = test::randomImage(3, 330, 240);
+		for (PixelFormat f : kAllFormats) {
+			std::vector<test::FormattedImage> frames = {
+				test::encodeImage(full.data(), 320, 240, f, YuvEncoding::Bt709Full, 4),
+				test::encodeImage(small.data(), 201, 153, f),
+				test::encodeImage(big.data(), 330, 240, f),
+			};
+			int detections = 0;
+			EXPECT_EQ(allocationsDuring(*det, frames, &detections), 0)
+				<< pixelFormatName(f) << " resize " << resize;
+			EXPECT_GT(detections, 0) << pixelFormatName(f) << " resize " << resize;
+		}
+	}
+}
+
+TEST(BoundedMemory, PetsInEveryPixelFormatAllocatesNothing)
+{
+	const std::string blobPath = test::inriaModelBlob();
+	if (blobPath.empty() || test::petsFrame(1).empty())
+		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
+	std::vector<uint8_t> blob;
+	ASSERT_TRUE(test::readFile(blobPath, blob));
+	Model model;
+	ASSERT_TRUE(loadModel(blob.data(), blob.size(), model).ok());
+	test::RgbImage img;
+	ASSERT_TRUE(test::loadRgb(test::petsFrame(1), img));
+	DetectorConfig cfg;
+	cfg.maxWidth = 768;
+	cfg.maxHeight = 576;
+	std::unique_ptr<Detector> det;
+	ASSERT_TRUE(Detector::create(model, cfg, det).ok());
+	for (PixelFormat f : kAllFormats) {
+		std::vector<test::FormattedImage> frames = {
+			test::encodeImage(img.pixels.data(), img.width, img.height, f) };
+		int detections = 0;
+		EXPECT_EQ(allocationsDuring(*det, frames, &detections), 0) << pixelFormatName(f);
+		std::printf("PETS frame 1 as %s at resize 1: %d detections, 0 allocations\n",
+			    pixelFormatName(f), detections);
+		EXPECT_GT(detections, 0) << pixelFormatName(f);
+	}
 }

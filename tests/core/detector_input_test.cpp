@@ -5,6 +5,7 @@
 
 #include <calped/detector.h>
 
+#include "pixel_formats.h"
 #include "synthetic.h"
 
 using namespace calped;
@@ -99,9 +100,70 @@ TEST(DetectorInput, WrongFormatAndStride)
 	auto det = makeDetector();
 	const auto img = test::randomImage(5, 320, 240);
 	ImageView v = ImageView::rgb8(img.data(), 320, 240);
-	v.format = PixelFormat::NV12;
+	v.format = PixelFormat(99);
 	EXPECT_EQ(detectCode(*det, v), ErrorCode::UnsupportedPixelFormat);
 	EXPECT_EQ(detectCode(*det, ImageView::rgb8(img.data(), 320, 240, 100)), ErrorCode::InvalidArgument);
+	expectHealthy(*det);
+}
+
+// Expects `code` and a message naming the format.
+void expectRejected(Detector &det, const ImageView &v, ErrorCode code, const char *what)
+{
+	Detections d;
+	const Status st = det.detect(v, d);
+	EXPECT_EQ(st.code(), code) << pixelFormatName(v.format) << " " << what << ": " << st.message();
+	EXPECT_NE(std::string(st.message()).find(pixelFormatName(v.format)), std::string::npos)
+		<< "message names the format: " << st.message();
+	EXPECT_EQ(d.count, 0);
+}
+
+TEST(DetectorInput, BadFramesOfEveryFormat)
+{
+	auto det = makeDetector();
+	const int w = 121, h = 131; // odd: chroma planes have 61 x 66 samples
+	const auto rgb = test::randomImage(8, w, h);
+	const PixelFormat formats[] = { PixelFormat::RGB8,       PixelFormat::BGR8,
+					PixelFormat::Gray8,      PixelFormat::NV12,
+					PixelFormat::YUV420,     PixelFormat::YUYV,
+					PixelFormat::BayerRGGB8, PixelFormat::BayerGRBG8,
+					PixelFormat::BayerGBRG8, PixelFormat::BayerBGGR8 };
+	for (PixelFormat f : formats) {
+		const auto frame = test::encodeImage(rgb.data(), w, h, f);
+		const ImageView good = frame.view();
+		Detections d;
+		const Status ok = det->detect(good, d);
+		EXPECT_TRUE(ok.ok()) << pixelFormatName(f) << ": " << ok.message();
+		const int planes = f == PixelFormat::YUV420 ? 3 : (f == PixelFormat::NV12 ? 2 : 1);
+		for (int i = 0; i < planes; i++) {
+			ImageView v = good;
+			v.planes[i] = nullptr;
+			expectRejected(*det, v, ErrorCode::ImageEmpty, "null plane");
+			v = good;
+			v.strides[i] -= 1; // one byte short of a row
+			expectRejected(*det, v, ErrorCode::InvalidArgument, "short stride");
+			v.strides[i] = -good.strides[i];
+			expectRejected(*det, v, ErrorCode::InvalidArgument, "negative stride");
+		}
+		ImageView v = good;
+		v.width = 0;
+		expectRejected(*det, v, ErrorCode::ImageEmpty, "zero width");
+		v = good;
+		v.height = -3;
+		expectRejected(*det, v, ErrorCode::ImageEmpty, "negative height");
+		const auto wide = test::randomImage(8, 321, 20);
+		const auto tooWide = test::encodeImage(wide.data(), 321, 20, f);
+		expectRejected(*det, tooWide.view(), ErrorCode::ImageTooLarge, "too wide");
+		if (f == PixelFormat::NV12 || f == PixelFormat::YUV420 || f == PixelFormat::YUYV) {
+			v = good;
+			v.yuv = YuvEncoding(7);
+			expectRejected(*det, v, ErrorCode::InvalidArgument, "unknown encoding");
+		}
+		if (planes == 1 && f >= PixelFormat::BayerRGGB8) {
+			v = good;
+			v.width = 1;
+			expectRejected(*det, v, ErrorCode::ImageTooSmall, "1-pixel Bayer");
+		}
+	}
 	expectHealthy(*det);
 }
 

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "pixel_formats.h"
 #include "pyramid/pyramid.h"
 #include "synthetic.h"
 
@@ -35,13 +36,20 @@ void checkLevelRows(const LevelChannels &full, const LevelChannels &part, const 
 	EXPECT_EQ(mismatches, 0) << "level " << level;
 }
 
-void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed)
+void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
+		  PixelFormat format = PixelFormat::RGB8)
 {
 	ModelParams p; // the INRIA model's options
 	Pyramid full, banded;
 	ASSERT_TRUE(full.init(p, width, height).ok());
 	ASSERT_TRUE(banded.init(p, width, height).ok());
-	ASSERT_TRUE(full.build(rgb.data(), 3 * width, width, height).ok());
+	// Camera formats are converted a strip of rows at a time, from the band's first row.
+	const test::FormattedImage image = test::encodeImage(rgb.data(), width, height, format);
+	FrameInput input;
+	ASSERT_TRUE(input.init(width, height, false).ok());
+	ASSERT_TRUE(checkImageLayout(image.view()).ok());
+	input.begin(image.view());
+	ASSERT_TRUE(full.build(input).ok());
 	const ScaleList &scales = full.scales();
 
 	// Random bands: empty, touching the top or bottom, one row, interior, whole level.
@@ -63,7 +71,8 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 			b = -3, e = h + 5; // beyond the level: clipped
 		bands[i] = RowBand{ b, e };
 	}
-	ASSERT_TRUE(banded.build(rgb.data(), 3 * width, width, height, bands).ok());
+	input.begin(image.view());
+	ASSERT_TRUE(banded.build(input, bands).ok());
 	ASSERT_EQ(banded.scales().count, scales.count);
 	EXPECT_LE(banded.computedCount, full.computedCount);
 
@@ -91,6 +100,18 @@ TEST(PyramidBands, RowsEqualTheFullPyramidUpscaled)
 	// At resize 2 the first octave is the largest image: the calibrated mode's main case.
 	const int width = 2 * 160, height = 2 * 124;
 	compareBands(test::randomImage(9, width, height), width, height, 5);
+}
+
+TEST(PyramidBands, RowsEqualTheFullPyramidFromCameraFormats)
+{
+	const int width = 317, height = 239;
+	const PixelFormat formats[] = { PixelFormat::YUV420, PixelFormat::NV12, PixelFormat::YUYV,
+					PixelFormat::BayerGRBG8 };
+	for (uint32_t k = 0; k < 4; k++) {
+		SCOPED_TRACE(pixelFormatName(formats[k]));
+		compareBands(test::randomImage(20 + k, width, height), width, height, 40 + k,
+			     formats[k]);
+	}
 }
 
 TEST(PyramidBands, NoBandsComputeNothing)

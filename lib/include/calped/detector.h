@@ -103,8 +103,9 @@ public:
 			     std::unique_ptr<Detector> &out);
 	~Detector();
 
-	// Runs the detector on one frame. Frames may differ in size between calls as long as
-	// they fit the configured maximum.
+	// Runs the detector on one frame in any PixelFormat (converted to RGB in integer
+	// arithmetic, docs/pixel-formats.md). Frames may differ in size and format between
+	// calls as long as they fit the configured maximum.
 	Status detect(const ImageView &image, Detections &out);
 
 	const FrameStats &lastStats() const;

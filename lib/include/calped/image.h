@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // A non-owning view of one image in memory, in any of the pixel formats cameras deliver.
+// docs/pixel-formats.md gives each format's layout and its exact conversion to RGB.
 #pragma once
 
 #include <cstddef>

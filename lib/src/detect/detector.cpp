@@ -50,6 +50,10 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	st = pyramid.init(params_, maxWidth_, maxHeight_);
 	if (!st.ok())
 		return st;
+	// Camera formats are converted a strip at a time, or whole before an input resize.
+	st = input_.init(cfg.maxWidth, cfg.maxHeight, cfg.resize != 1.0);
+	if (!st.ok())
+		return st;
 	try {
 		classifier.init(model, pyramid.rowStride(), pyramid.planeStride());
 		if (!std::isnan(cfg.cascadeThreshold))
@@ -224,20 +228,15 @@ void DetectorImpl::addWorldCoordinates(Detection *boxes, int n) const
 
 Status DetectorImpl::checkImage(const ImageView &image) const
 {
-	if (image.width <= 0 || image.height <= 0 || !image.planes[0])
-		return Status::error(ErrorCode::ImageEmpty, "image is %dx%d with %s data",
-				     image.width, image.height, image.planes[0] ? "some" : "no");
-	if (image.format != PixelFormat::RGB8)
-		return Status::error(ErrorCode::UnsupportedPixelFormat,
-				     "only RGB8 images are supported by this detector");
-	if (image.strides[0] < 3 * image.width)
-		return Status::error(ErrorCode::InvalidArgument,
-				     "stride %d is smaller than 3 x width %d", image.strides[0],
-				     image.width);
+	// Format, planes and strides (docs/pixel-formats.md), then sizes.
+	const Status layout = checkImageLayout(image);
+	if (!layout.ok())
+		return layout;
 	if (image.width > config.maxWidth || image.height > config.maxHeight)
 		return Status::error(ErrorCode::ImageTooLarge,
-				     "image %dx%d exceeds the configured maximum %dx%d", image.width,
-				     image.height, config.maxWidth, config.maxHeight);
+				     "%s image %dx%d exceeds the configured maximum %dx%d",
+				     pixelFormatName(image.format), image.width, image.height,
+				     config.maxWidth, config.maxHeight);
 	// World coordinates (and the calibrated plan) hold for the calibration's frame size.
 	if (hasCamera_ && (image.width != config.maxWidth || image.height != config.maxHeight))
 		return Status::error(ErrorCode::InvalidArgument,
@@ -273,10 +272,12 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 		return st;
 	const auto tStart = Clock::now();
 
-	const uint8_t *rgb = image.planes[0];
-	ptrdiff_t stride = image.strides[0];
-	int width = image.width, height = image.height;
+	input_.begin(image);
 	if (config.resize != 1.0) {
+		// The resampler reads a whole RGB8 image: other formats are converted first.
+		ptrdiff_t stride;
+		const uint8_t *rgb = input_.wholeFrame(stride);
+		const int width = image.width, height = image.height;
 		const int w1 = scaledSize(width, config.resize), h1 = scaledSize(height, config.resize);
 		if (w1 < 1 || h1 < 1)
 			return Status::error(ErrorCode::ImageTooSmall, "resize leaves no pixels");
@@ -285,15 +286,12 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 			return Status::error(ErrorCode::InvalidArgument, "resize ratio too small");
 		kernels::bestKernels().resampleRgb8(rgb, stride, width, height, resized_.data(), 3 * w1, w1, h1,
 					  resizeX_.data(), resizeY_.data(), resizeRow_.data());
-		rgb = resized_.data();
-		stride = 3 * w1;
-		width = w1;
-		height = h1;
+		input_.begin(ImageView::rgb8(resized_.data(), w1, h1));
 	}
 	stats.msResize = msSince(tStart);
 
 	const bool calibrated = config.method == DetectionMethod::Calibrated;
-	st = pyramid.build(rgb, stride, width, height, calibrated ? levelRows_ : nullptr);
+	st = pyramid.build(input_, calibrated ? levelRows_ : nullptr);
 	if (!st.ok())
 		return st;
 

@@ -11,6 +11,7 @@
 #include "detect/calibrated_plan.h"
 #include "detect/dense_regions.h"
 #include "detect/classifier.h"
+#include "channels/frame_input.h"
 #include "kernels.h"
 #include "pyramid/pyramid.h"
 
@@ -53,6 +54,8 @@ private:
 	DenseRegions regions_;
 	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
 	std::vector<uint32_t> frameList_;
+	// Camera frame -> RGB8 rows (docs/pixel-formats.md).
+	FrameInput input_;
 	// Input resampling ("resize").
 	std::vector<uint8_t> resized_;
 	std::vector<kernels::ResampleTap> resizeX_, resizeY_;

@@ -163,6 +163,9 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 		else
 			fullRows_.add(src);
 	}
+	// Colour conversion starts on an even row: 4:2:0 strips start on a chroma row.
+	if (!fullRows_.empty())
+		fullRows_.begin &= ~1;
 }
 
 void Pyramid::resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst,
@@ -176,10 +179,10 @@ void Pyramid::resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &ds
 			  yTapsBand_.data(), tmp.data, tmp.stride);
 }
 
-Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
-		      const RowBand *levelRows)
+Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 {
 	const auto t0 = Clock::now();
+	const int width = input.width(), height = input.height();
 	if (!luv_[0].fits(width, height))
 		return Status::error(ErrorCode::ImageTooLarge,
 				     "%dx%d is larger than the pyramid was set up for", width, height);
@@ -193,11 +196,16 @@ Status Pyramid::build(const uint8_t *rgb, ptrdiff_t stride, int width, int heigh
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width, height);
-	if (!fullRows_.empty())
-		k_->rgbToLuv(luvTables_, rgb + fullRows_.begin * stride, stride, width,
-			     fullRows_.size(), luv[0].row(fullRows_.begin),
-			     luv[1].row(fullRows_.begin), luv[2].row(fullRows_.begin),
-			     luv[0].stride);
+	// Only the rows some level reads, a strip of RGB rows at a time (the whole band at
+	// once when the frame is RGB8 already).
+	const int strip = input.stripRows();
+	for (int y0 = fullRows_.begin; y0 < fullRows_.end; y0 += strip) {
+		const int rows = std::min(strip, fullRows_.end - y0);
+		ptrdiff_t stride;
+		const uint8_t *rgb = input.rows(y0, rows, stride);
+		k_->rgbToLuv(luvTables_, rgb, stride, width, rows, luv[0].row(y0), luv[1].row(y0),
+			     luv[2].row(y0), luv[0].stride);
+	}
 
 	// Computed levels, from the largest: each is resampled from the whole image, or
 	// from the half-size image once that exists (as the toolbox does).

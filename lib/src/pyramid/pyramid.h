@@ -9,6 +9,7 @@
 #include <calped/status.h>
 
 #include "channels/channel_computer.h"
+#include "channels/frame_input.h"
 #include "core/plane.h"
 #include "kernels.h"
 #include "pyramid/row_band.h"
@@ -33,12 +34,20 @@ public:
 	Status init(const ModelParams &params, int maxWidth, int maxHeight,
 		    const kernels::KernelTable &k = kernels::bestKernels());
 
-	// Colour conversion and channels of the computed levels for one RGB8 image: all of
-	// them, or (levelRows non-null, one band per level of scales(), in rows of the level
-	// before padding) only what the classifier will read of each level: the level's rows
-	// in its band, and the padding beside them. Empty bands skip a level.
+	// Colour conversion and channels of the computed levels for one image, read from
+	// `input` a strip of RGB8 rows at a time: all of them, or (levelRows non-null, one
+	// band per level of scales(), in rows of the level before padding) only what the
+	// classifier will read of each level: the level's rows in its band, and the padding
+	// beside them. Empty bands skip a level.
+	Status build(FrameInput &input, const RowBand *levelRows = nullptr);
+	// The same for an RGB8 image in memory.
 	Status build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
-		     const RowBand *levelRows = nullptr);
+		     const RowBand *levelRows = nullptr)
+	{
+		FrameInput input;
+		input.begin(ImageView::rgb8(rgb, width, height, int(stride)));
+		return build(input, levelRows);
+	}
 
 	// The scale list build() will use for an image of this size (for setup).
 	Status scalesFor(int width, int height, ScaleList &out) const;
