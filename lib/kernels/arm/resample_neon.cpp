@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Plane resampling with NEON. Row pass: exact halving (the computed octaves) is the
+// rounding halving add of even and odd samples; other ratios work on blocks of eight
+// outputs whose taps all fall within 16 consecutive source samples (any ratio below
+// about 1.7): the 16 samples are loaded once and each tap's samples picked by a byte
+// table lookup. Column pass: whole rows of widening multiply-accumulates. Bit-identical to
+// ref/resample_ref.cpp: weights are non-negative and sum to at most gain * 2^14, so
+// 32-bit sums suffice, and (acc + 2^13) >> 14 saturated is VQRSHRN.
+#include <arm_neon.h>
+
+#include "opt/resample_body.h"
+#include "arm/neon_util.h"
+
+namespace calped {
+namespace kernels {
+
+namespace {
+
+constexpr int kChunk = 64; // blocks planned at a time (bounded stack use)
+
+struct BlockPlan {
+	int32_t base;          // first source sample of the block, or -1: not planned
+	uint8_t bytes[3][16];  // per tap: byte indices of each output's sample within the 16
+	uint16_t weight[3][8]; // per tap: each output's weight (0 for a missing tap)
+};
+
+bool planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
+{
+	const int base = taps[x0].first;
+	if (base + 16 > srcWidth)
+		return false;
+	for (int i = 0; i < 8; i++) {
+		const ResampleTap &t = taps[x0 + i];
+		if (t.count > 3 || t.first < base || t.first + t.count - base > 16)
+			return false;
+		for (int j = 0; j < 3; j++) {
+			const int32_t w = t.weight[j < t.count ? j : 0];
+			if (w < 0 || w > 65535)
+				return false;
+			const int sample = (j < t.count ? t.first + j : t.first) - base;
+			p.bytes[j][2 * i] = uint8_t(2 * sample);
+			p.bytes[j][2 * i + 1] = uint8_t(2 * sample + 1);
+			p.weight[j][i] = uint16_t(j < t.count ? t.weight[j] : 0);
+		}
+	}
+	p.base = base;
+	return true;
+}
+
+inline uint16_t rowSample(const uint16_t *in, const ResampleTap &t)
+{
+	const uint16_t *p = in + t.first;
+	uint32_t acc = 0;
+	for (int j = 0; j < t.count; j++)
+		acc += uint32_t(t.weight[j]) * p[j];
+	return roundQ14(acc);
+}
+
+bool isHalving(const ResampleTap *taps, int dstWidth)
+{
+	for (int x = 0; x < dstWidth; x++) {
+		const ResampleTap &t = taps[x];
+		if (t.count != 2 || t.first != 2 * x || t.weight[0] != kOne / 2 || t.weight[1] != kOne / 2)
+			return false;
+	}
+	return true;
+}
+
+// Exactly half the width: (a + b + 1) >> 1 is the rounding halving add.
+void halveRows(const uint16_t *src, ptrdiff_t srcStride, int srcHeight, int dstWidth,
+	       uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	for (int y = 0; y < srcHeight; y++) {
+		const uint16_t *in = src + y * srcStride;
+		uint16_t *out = tmp + y * tmpStride;
+		int x = 0;
+		for (; x + 8 <= dstWidth; x += 8) {
+			const uint16x8x2_t s = vld2q_u16(in + 2 * x); // even and odd samples
+			vst1q_u16(out + x, vrhaddq_u16(s.val[0], s.val[1]));
+		}
+		for (; x < dstWidth; x++)
+			out[x] = static_cast<uint16_t>((uint32_t(in[2 * x]) + in[2 * x + 1] + 1) >> 1);
+	}
+}
+
+// Eight outputs of one row from a planned block.
+inline uint16x8_t plannedBlock(const BlockPlan &p, const uint16_t *in)
+{
+	const uint8x16x2_t samples = { { vreinterpretq_u8_u16(vld1q_u16(in + p.base)),
+					 vreinterpretq_u8_u16(vld1q_u16(in + p.base + 8)) } };
+	uint32x4_t lo = vdupq_n_u32(0), hi = vdupq_n_u32(0);
+	for (int j = 0; j < 3; j++) {
+		const uint16x8_t s = vreinterpretq_u16_u8(lookupBytes32(samples, vld1q_u8(p.bytes[j])));
+		const uint16x8_t w = vld1q_u16(p.weight[j]);
+		lo = vmlal_u16(lo, vget_low_u16(s), vget_low_u16(w));
+		hi = vmlal_u16(hi, vget_high_u16(s), vget_high_u16(w));
+	}
+	return vcombine_u16(vqrshrn_n_u32(lo, kQ), vqrshrn_n_u32(hi, kQ));
+}
+
+void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+	     int dstWidth, const ResampleTap *xTaps, uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	if (isHalving(xTaps, dstWidth)) {
+		halveRows(src, srcStride, srcHeight, dstWidth, tmp, tmpStride);
+		return;
+	}
+	BlockPlan plans[kChunk];
+	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
+		const int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
+		for (int b = 0; b < blocks; b++)
+			if (!planBlock(xTaps, chunk + 8 * b, srcWidth, plans[b]))
+				plans[b].base = -1;
+		const int end = std::min(dstWidth, chunk + 8 * kChunk);
+		for (int y = 0; y < srcHeight; y++) {
+			const uint16_t *in = src + y * srcStride;
+			uint16_t *out = tmp + y * tmpStride;
+			for (int b = 0; b < blocks; b++) {
+				const int x0 = chunk + 8 * b;
+				if (plans[b].base < 0) {
+					for (int x = x0; x < x0 + 8; x++)
+						out[x] = rowSample(in, xTaps[x]);
+					continue;
+				}
+				vst1q_u16(out + x0, plannedBlock(plans[b], in));
+			}
+			for (int x = chunk + 8 * blocks; x < end; x++)
+				out[x] = rowSample(in, xTaps[x]);
+		}
+	}
+}
+
+// Column pass for one output row: rows r0 + j * tmpStride weighted by t's weights.
+void columnRow(const ResampleTap &t, const uint16_t *r0, ptrdiff_t tmpStride, int dstWidth,
+	       uint16_t *out)
+{
+	int x = 0;
+	for (; x + 8 <= dstWidth; x += 8) {
+		uint32x4_t lo = vdupq_n_u32(0), hi = vdupq_n_u32(0);
+		for (int j = 0; j < t.count; j++) {
+			const uint16x8_t s = vld1q_u16(r0 + j * tmpStride + x);
+			const uint32x4_t wj = vdupq_n_u32(uint32_t(t.weight[j]));
+			lo = vmlaq_u32(lo, vmovl_u16(vget_low_u16(s)), wj);
+			hi = vmlaq_u32(hi, vmovl_u16(vget_high_u16(s)), wj);
+		}
+		vst1q_u16(out + x, vcombine_u16(vqrshrn_n_u32(lo, kQ), vqrshrn_n_u32(hi, kQ)));
+	}
+	for (; x < dstWidth; x++) {
+		uint32_t acc = 0;
+		for (int j = 0; j < t.count; j++)
+			acc += uint32_t(t.weight[j]) * r0[j * tmpStride + x];
+		out[x] = roundQ14(acc);
+	}
+}
+
+} // namespace
+
+void resamplePlane_neon(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride)
+{
+	rowPass(src, srcStride, srcWidth, srcHeight, dstWidth, xTaps, tmp, tmpStride);
+	for (int y = 0; y < dstHeight; y++) {
+		const ResampleTap &t = yTaps[y];
+		columnRow(t, tmp + t.first * tmpStride, tmpStride, dstWidth, dst + y * dstStride);
+	}
+}
+
+} // namespace kernels
+} // namespace calped
