@@ -90,9 +90,11 @@ const KernelTable &neonKernels()
 		KernelTable t = portableKernels();
 		t.name = "neon";
 		t.rgbToLuv = rgbToLuv_neon;
+		t.resampleRgb8 = resampleRgb8_neon;
 		t.resamplePlane = resamplePlane_neon;
 		t.smoothTri1 = smoothTri1_neon;
 		t.gradMagOrient = gradMagOrient_neon;
+		t.triSum = triSumR_neon;
 		t.normalizeMag = normalizeMag_neon;
 		t.shrink4 = shrink4_neon;
 		t.gradHist4 = gradHist4_neon;

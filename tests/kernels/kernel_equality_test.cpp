@@ -177,7 +177,8 @@ TEST(KernelEquality, ResampleRgb8)
 {
 	std::mt19937 rng(5);
 	const std::pair<int, int> sizes[] = { { 1, 2 }, { 3, 6 }, { 5, 10 }, { 8, 12 }, { 13, 33 },
-					      { 16, 40 }, { 7, 17 }, { 9, 9 }, { 20, 30 }, { 30, 20 } };
+					      { 16, 40 }, { 7, 17 }, { 9, 9 }, { 20, 30 }, { 30, 20 },
+					      { 13, 26 }, { 37, 74 } }; // 2x enlargements past one SIMD block
 	for (const KernelTable *k : tablesUnderTest())
 		for (auto [n, m] : sizes)
 			for (auto [nh, mh] : sizes) {
