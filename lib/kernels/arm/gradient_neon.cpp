@@ -30,8 +30,8 @@ static_assert(offsetof(GradientTables, fromSinObtuse) ==
 // squared magnitude. m2 = 0 needs no special case: its mantissa is 0 and
 // sqrtQ8[0] = rsqrtQ20[0] = 0, so the magnitude is 0 and c12 = 0 reads fromCos[4096], the
 // reference's orientation for no gradient.
-void gradientPixels4(const GradientTables &t, int32x4_t gx, int32x4_t gy, uint32x4_t m2,
-		     uint16x4_t &mag, uint16x4_t &orient)
+CALPED_NEON_INLINE void gradientPixels4(const GradientTables &t, int32x4_t gx, int32x4_t gy,
+					uint32x4_t m2, uint16x4_t &mag, uint16x4_t &orient)
 {
 	// k = bitLength - 12, at least 0, rounded up to even; m = m2 >> k.
 	int32x4_t k = vmaxq_s32(vsubq_s32(bitLength4(m2), vdupq_n_s32(12)), vdupq_n_s32(0));
@@ -98,8 +98,8 @@ inline void keepStronger(Gradient4 &best, const Gradient4 &g)
 
 // Eight inner pixels of row y starting at x: derivatives of the three channels, the
 // strongest kept, then magnitude and orientation.
-void gradientPixels8(const GradientTables &t, const uint16_t *const rows[3][3], int x,
-		     int vScale, uint16_t *mag, uint16_t *orient)
+CALPED_NEON_INLINE void gradientPixels8(const GradientTables &t, const uint16_t *const rows[3][3],
+					int x, int vScale, uint16_t *mag, uint16_t *orient)
 {
 	Gradient4 lo, hi;
 	for (int c = 0; c < 3; c++) {

@@ -40,7 +40,8 @@ struct Luv4 {
 	uint16x4_t l, u, v;
 };
 
-Luv4 luv4(const LuvTables &t, uint16x4_t r16, uint16x4_t g16, uint16x4_t b16)
+CALPED_NEON_INLINE Luv4 luv4(const LuvTables &t, uint16x4_t r16, uint16x4_t g16,
+			     uint16x4_t b16)
 {
 	const int32x4_t r = vreinterpretq_s32_u32(vmovl_u16(r16));
 	const int32x4_t g = vreinterpretq_s32_u32(vmovl_u16(g16));

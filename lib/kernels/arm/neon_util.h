@@ -7,6 +7,10 @@
 
 #include <cstdint>
 
+// For the per-block helpers called in the kernels' inner loops: inlined, their constants
+// (table coefficients, masks) are set up once per row instead of once per call.
+#define CALPED_NEON_INLINE inline __attribute__((always_inline))
+
 namespace calped {
 namespace kernels {
 namespace {

@@ -14,7 +14,7 @@ namespace kernels {
 
 namespace {
 
-uint16x4_t normalize4(const GradientTables &t, uint16x4_t mag, uint32x4_t sum)
+CALPED_NEON_INLINE uint16x4_t normalize4(const GradientTables &t, uint16x4_t mag, uint32x4_t sum)
 {
 	const uint32x4_t d = vaddq_u32(sum, vdupq_n_u32(t.normConst));
 	const uint32x4_t dZero = vceqq_u32(d, vdupq_n_u32(0));

@@ -83,17 +83,32 @@ void halveRows(const uint16_t *src, ptrdiff_t srcStride, int srcHeight, int dstW
 	}
 }
 
-// Eight outputs of one row from a planned block.
-inline uint16x8_t plannedBlock(const BlockPlan &p, const uint16_t *in)
+// A planned block in registers, for all the rows of a strip.
+struct BlockRegs {
+	uint8x16_t bytes[3];
+	uint16x8_t weight[3];
+};
+
+inline BlockRegs loadPlan(const BlockPlan &p)
 {
-	const uint8x16x2_t samples = { { vreinterpretq_u8_u16(vld1q_u16(in + p.base)),
-					 vreinterpretq_u8_u16(vld1q_u16(in + p.base + 8)) } };
+	BlockRegs r;
+	for (int j = 0; j < 3; j++) {
+		r.bytes[j] = vld1q_u8(p.bytes[j]);
+		r.weight[j] = vld1q_u16(p.weight[j]);
+	}
+	return r;
+}
+
+// Eight outputs of one row from the 16 samples at `in`.
+inline uint16x8_t plannedBlock(const BlockRegs &p, const uint16_t *in)
+{
+	const uint8x16x2_t samples = { { vreinterpretq_u8_u16(vld1q_u16(in)),
+					 vreinterpretq_u8_u16(vld1q_u16(in + 8)) } };
 	uint32x4_t lo = vdupq_n_u32(0), hi = vdupq_n_u32(0);
 	for (int j = 0; j < 3; j++) {
-		const uint16x8_t s = vreinterpretq_u16_u8(lookupBytes32(samples, vld1q_u8(p.bytes[j])));
-		const uint16x8_t w = vld1q_u16(p.weight[j]);
-		lo = vmlal_u16(lo, vget_low_u16(s), vget_low_u16(w));
-		hi = vmlal_u16(hi, vget_high_u16(s), vget_high_u16(w));
+		const uint16x8_t s = vreinterpretq_u16_u8(lookupBytes32(samples, p.bytes[j]));
+		lo = vmlal_u16(lo, vget_low_u16(s), vget_low_u16(p.weight[j]));
+		hi = vmlal_u16(hi, vget_high_u16(s), vget_high_u16(p.weight[j]));
 	}
 	return vcombine_u16(vqrshrn_n_u32(lo, kQ), vqrshrn_n_u32(hi, kQ));
 }
@@ -105,6 +120,9 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 		halveRows(src, srcStride, srcHeight, dstWidth, tmp, tmpStride);
 		return;
 	}
+	// Chunks of blocks across, strips of rows down: each block's plan stays in registers
+	// for a strip, and a strip's rows stay in the cache for all the chunk's blocks.
+	constexpr int kStrip = 16;
 	BlockPlan plans[kChunk];
 	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
 		const int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
@@ -112,44 +130,80 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 			if (!planBlock(xTaps, chunk + 8 * b, srcWidth, plans[b]))
 				plans[b].base = -1;
 		const int end = std::min(dstWidth, chunk + 8 * kChunk);
-		for (int y = 0; y < srcHeight; y++) {
-			const uint16_t *in = src + y * srcStride;
-			uint16_t *out = tmp + y * tmpStride;
+		for (int y0 = 0; y0 < srcHeight; y0 += kStrip) {
+			const int y1 = std::min(srcHeight, y0 + kStrip);
 			for (int b = 0; b < blocks; b++) {
 				const int x0 = chunk + 8 * b;
 				if (plans[b].base < 0) {
-					for (int x = x0; x < x0 + 8; x++)
-						out[x] = rowSample(in, xTaps[x]);
+					for (int y = y0; y < y1; y++)
+						for (int x = x0; x < x0 + 8; x++)
+							tmp[y * tmpStride + x] = rowSample(src + y * srcStride, xTaps[x]);
 					continue;
 				}
-				vst1q_u16(out + x0, plannedBlock(plans[b], in));
+				const BlockRegs regs = loadPlan(plans[b]);
+				const uint16_t *in = src + y0 * srcStride + plans[b].base;
+				uint16_t *out = tmp + y0 * tmpStride + x0;
+				for (int y = y0; y < y1; y++, in += srcStride, out += tmpStride)
+					vst1q_u16(out, plannedBlock(regs, in));
 			}
-			for (int x = chunk + 8 * blocks; x < end; x++)
-				out[x] = rowSample(in, xTaps[x]);
+			for (int y = y0; y < y1; y++)
+				for (int x = chunk + 8 * blocks; x < end; x++)
+					tmp[y * tmpStride + x] = rowSample(src + y * srcStride, xTaps[x]);
 		}
 	}
 }
 
 // Column pass for one output row: rows r0 + j * tmpStride weighted by t's weights.
+// Taps > 0 is the tap count (unrolled; weights below 2^16, widening multiply-accumulates
+// of 16-bit lanes); 0 takes any count and weight.
+template <int Taps>
 void columnRow(const ResampleTap &t, const uint16_t *r0, ptrdiff_t tmpStride, int dstWidth,
 	       uint16_t *out)
 {
+	const int n = Taps > 0 ? Taps : t.count;
 	int x = 0;
 	for (; x + 8 <= dstWidth; x += 8) {
 		uint32x4_t lo = vdupq_n_u32(0), hi = vdupq_n_u32(0);
-		for (int j = 0; j < t.count; j++) {
+		for (int j = 0; j < n; j++) {
 			const uint16x8_t s = vld1q_u16(r0 + j * tmpStride + x);
-			const uint32x4_t wj = vdupq_n_u32(uint32_t(t.weight[j]));
-			lo = vmlaq_u32(lo, vmovl_u16(vget_low_u16(s)), wj);
-			hi = vmlaq_u32(hi, vmovl_u16(vget_high_u16(s)), wj);
+			if constexpr (Taps > 0) {
+				const uint16_t w = uint16_t(t.weight[j]);
+				lo = vmlal_n_u16(lo, vget_low_u16(s), w);
+				hi = vmlal_n_u16(hi, vget_high_u16(s), w);
+			} else {
+				const uint32x4_t w = vdupq_n_u32(uint32_t(t.weight[j]));
+				lo = vmlaq_u32(lo, vmovl_u16(vget_low_u16(s)), w);
+				hi = vmlaq_u32(hi, vmovl_u16(vget_high_u16(s)), w);
+			}
 		}
 		vst1q_u16(out + x, vcombine_u16(vqrshrn_n_u32(lo, kQ), vqrshrn_n_u32(hi, kQ)));
 	}
 	for (; x < dstWidth; x++) {
 		uint32_t acc = 0;
-		for (int j = 0; j < t.count; j++)
+		for (int j = 0; j < n; j++)
 			acc += uint32_t(t.weight[j]) * r0[j * tmpStride + x];
 		out[x] = roundQ14(acc);
+	}
+}
+
+void columnPass(uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		const ResampleTap *yTaps, const uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	for (int y = 0; y < dstHeight; y++) {
+		const ResampleTap &t = yTaps[y];
+		const uint16_t *r0 = tmp + t.first * tmpStride;
+		uint16_t *out = dst + y * dstStride;
+		bool small = true; // every weight fits 16 bits
+		for (int j = 0; j < t.count; j++)
+			small = small && t.weight[j] >= 0 && t.weight[j] <= 65535;
+		if (small && t.count == 1)
+			columnRow<1>(t, r0, tmpStride, dstWidth, out);
+		else if (small && t.count == 2)
+			columnRow<2>(t, r0, tmpStride, dstWidth, out);
+		else if (small && t.count == 3)
+			columnRow<3>(t, r0, tmpStride, dstWidth, out);
+		else
+			columnRow<0>(t, r0, tmpStride, dstWidth, out);
 	}
 }
 
@@ -161,10 +215,7 @@ void resamplePlane_neon(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, 
 			ptrdiff_t tmpStride)
 {
 	rowPass(src, srcStride, srcWidth, srcHeight, dstWidth, xTaps, tmp, tmpStride);
-	for (int y = 0; y < dstHeight; y++) {
-		const ResampleTap &t = yTaps[y];
-		columnRow(t, tmp + t.first * tmpStride, tmpStride, dstWidth, dst + y * dstStride);
-	}
+	columnPass(dst, dstStride, dstWidth, dstHeight, yTaps, tmp, tmpStride);
 }
 
 } // namespace kernels
