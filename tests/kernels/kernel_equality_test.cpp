@@ -112,11 +112,12 @@ TEST(KernelEquality, ResamplePlane)
 
 TEST(KernelEquality, ResamplePlaneHalvingAndLongRows)
 {
-	// Widths with several full SIMD blocks, exact halving (the computed octaves) and the
-	// ratios of approximated levels.
+	// Widths with several full SIMD blocks, exact halving (the computed octaves), the
+	// ratios of approximated levels and larger shrinking ratios (the smaller octaves).
 	std::mt19937 rng(10);
 	const std::pair<int, int> widths[] = { { 64, 32 }, { 130, 65 }, { 96, 48 }, { 192, 176 },
-					       { 144, 161 }, { 200, 117 }, { 97, 103 } };
+					       { 144, 161 }, { 200, 117 }, { 97, 103 },
+					       { 256, 64 }, { 301, 40 }, { 150, 51 } }; // and shrinking by 3 to 8
 	for (const KernelTable *k : tablesUnderTest())
 		for (auto [sw, dw] : widths)
 			for (int offset : { 0, 1 }) {

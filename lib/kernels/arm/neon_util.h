@@ -61,6 +61,12 @@ inline uint32x4_t pairSums(uint32x4_t a, uint32x4_t b)
 #endif
 }
 
+// The sums of all four lanes of a, b, c and d, in that order.
+inline uint32x4_t horizontalSums4(uint32x4_t a, uint32x4_t b, uint32x4_t c, uint32x4_t d)
+{
+	return pairSums(pairSums(a, b), pairSums(c, d));
+}
+
 // The sums of all four lanes of a and of b.
 inline uint32x2_t laneSums2(uint32x4_t a, uint32x4_t b)
 {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Plane resampling with NEON. Row pass: exact halving (the computed octaves) is the
 // rounding halving add of even and odd samples; other ratios work on blocks of eight
-// outputs whose taps all fall within 16 consecutive source samples (any ratio below
-// about 1.7): the 16 samples are loaded once and each tap's samples picked by a byte
-// table lookup. Column pass: whole rows of widening multiply-accumulates. Bit-identical to
+// outputs. When their taps all fall within 16 consecutive source samples (any ratio below
+// about 1.7) the 16 samples are loaded once and each tap's samples picked by a byte table
+// lookup; shrinking by up to 8, each output multiplies its own 8 samples by its weights
+// padded with zeros and sums across lanes. Column pass: whole rows of widening multiply-accumulates. Bit-identical to
 // ref/resample_ref.cpp: weights are non-negative and sum to at most gain * 2^14, so
 // 32-bit sums suffice, and (acc + 2^13) >> 14 saturated is VQRSHRN.
 #include <arm_neon.h>
@@ -18,13 +19,35 @@ namespace {
 
 constexpr int kChunk = 64; // blocks planned at a time (bounded stack use)
 
-struct BlockPlan {
-	int32_t base;          // first source sample of the block, or -1: not planned
+// How a block of eight outputs is computed for every row.
+enum class BlockKind {
+	Scalar, // one output at a time
+	Window, // all taps within 16 consecutive samples (at most 3 taps per output)
+	Wide,   // up to 8 taps per output, each output from its own 8 samples
+};
+
+struct WindowPlan {
+	int32_t base;          // first of the 16 source samples
 	uint8_t bytes[3][16];  // per tap: byte indices of each output's sample within the 16
 	uint16_t weight[3][8]; // per tap: each output's weight (0 for a missing tap)
 };
 
-bool planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
+struct WidePlan {
+	int32_t first[8];      // per output: its first source sample
+	uint16_t weight[8][8]; // per output: its weights, 0 past its tap count
+};
+
+struct BlockPlan {
+	BlockKind kind;
+	union {
+		WindowPlan window;
+		WidePlan wide;
+	};
+};
+
+inline bool weightFits16(int32_t w) { return w >= 0 && w <= 65535; }
+
+bool planWindow(const ResampleTap *taps, int x0, int srcWidth, WindowPlan &p)
 {
 	const int base = taps[x0].first;
 	if (base + 16 > srcWidth)
@@ -34,8 +57,7 @@ bool planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
 		if (t.count > 3 || t.first < base || t.first + t.count - base > 16)
 			return false;
 		for (int j = 0; j < 3; j++) {
-			const int32_t w = t.weight[j < t.count ? j : 0];
-			if (w < 0 || w > 65535)
+			if (!weightFits16(t.weight[j < t.count ? j : 0]))
 				return false;
 			const int sample = (j < t.count ? t.first + j : t.first) - base;
 			p.bytes[j][2 * i] = uint8_t(2 * sample);
@@ -45,6 +67,32 @@ bool planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
 	}
 	p.base = base;
 	return true;
+}
+
+// Shrinking by 2 to 8 (the smaller computed octaves): each output's taps padded to 8.
+bool planWide(const ResampleTap *taps, int x0, int srcWidth, WidePlan &p)
+{
+	for (int i = 0; i < 8; i++) {
+		const ResampleTap &t = taps[x0 + i];
+		if (t.count > 8 || t.first + 8 > srcWidth)
+			return false;
+		p.first[i] = t.first;
+		for (int j = 0; j < 8; j++) {
+			if (j < t.count && !weightFits16(t.weight[j]))
+				return false;
+			p.weight[i][j] = uint16_t(j < t.count ? t.weight[j] : 0);
+		}
+	}
+	return true;
+}
+
+BlockKind planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
+{
+	if (planWindow(taps, x0, srcWidth, p.window))
+		return BlockKind::Window;
+	if (planWide(taps, x0, srcWidth, p.wide))
+		return BlockKind::Wide;
+	return BlockKind::Scalar;
 }
 
 inline uint16_t rowSample(const uint16_t *in, const ResampleTap &t)
@@ -89,7 +137,7 @@ struct BlockRegs {
 	uint16x8_t weight[3];
 };
 
-inline BlockRegs loadPlan(const BlockPlan &p)
+inline BlockRegs loadPlan(const WindowPlan &p)
 {
 	BlockRegs r;
 	for (int j = 0; j < 3; j++) {
@@ -113,6 +161,21 @@ inline uint16x8_t plannedBlock(const BlockRegs &p, const uint16_t *in)
 	return vcombine_u16(vqrshrn_n_u32(lo, kQ), vqrshrn_n_u32(hi, kQ));
 }
 
+// Eight outputs of one row from a wide plan: each output's 8 samples times its 8 weights,
+// summed across lanes.
+inline uint16x8_t wideBlock(const WidePlan &p, const uint16_t *in)
+{
+	uint32x4_t acc[8];
+	for (int i = 0; i < 8; i++) {
+		const uint16x8_t s = vld1q_u16(in + p.first[i]), w = vld1q_u16(p.weight[i]);
+		acc[i] = vmlal_u16(vmull_u16(vget_low_u16(s), vget_low_u16(w)), vget_high_u16(s),
+				   vget_high_u16(w));
+	}
+	const uint32x4_t lo = horizontalSums4(acc[0], acc[1], acc[2], acc[3]);
+	const uint32x4_t hi = horizontalSums4(acc[4], acc[5], acc[6], acc[7]);
+	return vcombine_u16(vqrshrn_n_u32(lo, kQ), vqrshrn_n_u32(hi, kQ));
+}
+
 void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
 	     int dstWidth, const ResampleTap *xTaps, uint16_t *tmp, ptrdiff_t tmpStride)
 {
@@ -127,24 +190,27 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
 		const int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
 		for (int b = 0; b < blocks; b++)
-			if (!planBlock(xTaps, chunk + 8 * b, srcWidth, plans[b]))
-				plans[b].base = -1;
+			plans[b].kind = planBlock(xTaps, chunk + 8 * b, srcWidth, plans[b]);
 		const int end = std::min(dstWidth, chunk + 8 * kChunk);
 		for (int y0 = 0; y0 < srcHeight; y0 += kStrip) {
 			const int y1 = std::min(srcHeight, y0 + kStrip);
 			for (int b = 0; b < blocks; b++) {
 				const int x0 = chunk + 8 * b;
-				if (plans[b].base < 0) {
-					for (int y = y0; y < y1; y++)
-						for (int x = x0; x < x0 + 8; x++)
-							tmp[y * tmpStride + x] = rowSample(src + y * srcStride, xTaps[x]);
-					continue;
-				}
-				const BlockRegs regs = loadPlan(plans[b]);
-				const uint16_t *in = src + y0 * srcStride + plans[b].base;
+				const BlockPlan &p = plans[b];
+				const uint16_t *in = src + y0 * srcStride;
 				uint16_t *out = tmp + y0 * tmpStride + x0;
-				for (int y = y0; y < y1; y++, in += srcStride, out += tmpStride)
-					vst1q_u16(out, plannedBlock(regs, in));
+				if (p.kind == BlockKind::Window) {
+					const BlockRegs regs = loadPlan(p.window);
+					for (int y = y0; y < y1; y++, in += srcStride, out += tmpStride)
+						vst1q_u16(out, plannedBlock(regs, in + p.window.base));
+				} else if (p.kind == BlockKind::Wide) {
+					for (int y = y0; y < y1; y++, in += srcStride, out += tmpStride)
+						vst1q_u16(out, wideBlock(p.wide, in));
+				} else {
+					for (int y = y0; y < y1; y++, in += srcStride, out += tmpStride)
+						for (int i = 0; i < 8; i++)
+							out[i] = rowSample(in, xTaps[x0 + i]);
+				}
 			}
 			for (int y = y0; y < y1; y++)
 				for (int x = chunk + 8 * blocks; x < end; x++)
