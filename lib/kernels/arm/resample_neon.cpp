@@ -4,9 +4,10 @@
 // outputs. When their taps all fall within 16 consecutive source samples (any ratio below
 // about 1.7) the 16 samples are loaded once and each tap's samples picked by a byte table
 // lookup; shrinking by up to 8, each output multiplies its own 8 samples by its weights
-// padded with zeros and sums across lanes. Column pass: whole rows of widening multiply-accumulates. Bit-identical to
-// ref/resample_ref.cpp: weights are non-negative and sum to at most gain * 2^14, so
-// 32-bit sums suffice, and (acc + 2^13) >> 14 saturated is VQRSHRN.
+// padded with zeros and sums across lanes. Column pass: whole rows of widening
+// multiply-accumulates. Bit-identical to ref/resample_ref.cpp: weights are non-negative
+// and sum to at most gain * 2^14, so 32-bit sums suffice, and (acc + 2^13) >> 14
+// saturated is VQRSHRN.
 #include <arm_neon.h>
 
 #include "opt/resample_body.h"

@@ -85,12 +85,14 @@ void resampleRgb8_neon(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, in
 			const int32x4x3_t a0 = vld3q_s32(a), a1 = vld3q_s32(a + 12);
 			const int32x4x3_t b0 = vld3q_s32(b), b1 = vld3q_s32(b + 12);
 			uint8x16x3_t pixels;
+			// 3 * q * near + q * far, for the four pixels of each half.
+			auto mix = [&](int32x4_t near, int32x4_t far) {
+				return vmlaq_n_s32(vmulq_n_s32(far, q), near, 3 * q);
+			};
 			for (int c = 0; c < 3; c++) {
-				const uint8x8_t odd = toByte(vmlaq_n_s32(vmulq_n_s32(b0.val[c], q), a0.val[c], 3 * q),
-							     vmlaq_n_s32(vmulq_n_s32(b1.val[c], q), a1.val[c], 3 * q),
+				const uint8x8_t odd = toByte(mix(a0.val[c], b0.val[c]), mix(a1.val[c], b1.val[c]),
 							     biasV, right);
-				const uint8x8_t even = toByte(vmlaq_n_s32(vmulq_n_s32(a0.val[c], q), b0.val[c], 3 * q),
-							      vmlaq_n_s32(vmulq_n_s32(a1.val[c], q), b1.val[c], 3 * q),
+				const uint8x8_t even = toByte(mix(b0.val[c], a0.val[c]), mix(b1.val[c], a1.val[c]),
 							      biasV, right);
 				const uint8x8x2_t zipped = vzip_u8(odd, even);
 				pixels.val[c] = vcombine_u8(zipped.val[0], zipped.val[1]);
