@@ -78,11 +78,43 @@ bool cpuHasAvx2()
 } // namespace
 #endif
 
+// ---- NEON (aarch64, and armv7 built with -mfpu=neon) ------------------------------------
+// Chosen at compile time: NEON is part of the base ISA on aarch64, and on armv7 the build
+// flags promise it (lib/kernels/meson.build checks that they do).
+#if CALPED_HAVE_NEON
+namespace {
+
+const KernelTable &neonKernels()
+{
+	static const KernelTable table = [] {
+		KernelTable t = portableKernels();
+		t.name = "neon";
+		t.rgbToLuv = rgbToLuv_neon;
+		t.resampleRgb8 = resampleRgb8_neon;
+		t.resamplePlane = resamplePlane_neon;
+		t.smoothTri1 = smoothTri1_neon;
+		t.gradMagOrient = gradMagOrient_neon;
+		t.triSum = triSumR_neon;
+		t.normalizeMag = normalizeMag_neon;
+		t.shrink4 = shrink4_neon;
+		t.gradHist4 = gradHist4_neon;
+		return t;
+	}();
+	return table;
+}
+
+} // namespace
+#endif
+// ---- end of NEON --------------------------------------------------------------------------
+
 const KernelTable &bestKernels()
 {
 #if CALPED_HAVE_AVX2
 	if (cpuHasAvx2())
 		return avx2Kernels();
+#endif
+#if CALPED_HAVE_NEON
+	return neonKernels();
 #endif
 	return portableKernels();
 }
@@ -99,6 +131,9 @@ int availableKernelTables(const KernelTable *out[], int capacity)
 #if CALPED_HAVE_AVX2
 	if (cpuHasAvx2())
 		add(avx2Kernels());
+#endif
+#if CALPED_HAVE_NEON
+	add(neonKernels());
 #endif
 	return n;
 }

@@ -221,6 +221,33 @@ void resamplePlane_avx2(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, 
 			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 			ptrdiff_t tmpStride);
 
+// ---- NEON kernels (lib/kernels/arm/, aarch64 and armv7 with NEON) ----------------------
+// Same contracts as the references above; built only when the target has NEON.
+void rgbToLuv_neon(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride, int width,
+		   int height, uint16_t *l, uint16_t *u, uint16_t *v, ptrdiff_t stride);
+void resampleRgb8_neon(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+		       uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		       const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp);
+void resamplePlane_neon(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride);
+void smoothTri1_neon(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
+		     ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp);
+void triSumR_neon(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
+		  int width, int height, int r, uint32_t *scratch);
+void gradMagOrient_neon(const GradientTables &t, const uint16_t *const planes[3],
+			ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
+			ptrdiff_t outStride, int32_t *scratch);
+void normalizeMag_neon(const GradientTables &t, uint16_t *mag, ptrdiff_t magStride,
+		       const uint32_t *smoothedSum, ptrdiff_t sumStride, int width, int height);
+void shrink4_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void gradHist4_neon(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
+		    ptrdiff_t histStride, uint32_t *scratch);
+// ---- end of NEON kernels ---------------------------------------------------------------
+
 // ---- dispatch ----------------------------------------------------------------------------
 // The kernels one pipeline uses, chosen once at setup. Every entry of every table
 // produces output bit-identical to the reference table's.

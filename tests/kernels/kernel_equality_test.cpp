@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Every optimised kernel against the scalar reference: random inputs, odd widths and
-// heights, strides wider than rows and unaligned starts; outputs must be bit-identical.
+// heights, strides wider than rows and unaligned starts (base pointers one element past an
+// aligned address, for inputs and outputs); outputs must be bit-identical.
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 #include <vector>
 
 #include "kernels.h"
@@ -37,6 +39,25 @@ std::vector<const KernelTable *> tablesUnderTest()
 
 } // namespace
 
+TEST(KernelTables, NeonTableOnNeonTargets)
+{
+	// An ARM build with NEON must compare the NEON kernels here, not silently fall back to
+	// the portable ones (a build-configuration mistake the equality tests cannot see);
+	// -Dsimd=none leaves them out on purpose.
+	bool haveNeon = false;
+	for (const KernelTable *k : tablesUnderTest())
+		haveNeon = haveNeon || std::string(k->name) == "neon";
+#if defined(__ARM_NEON) || defined(__ARM_NEON__)
+	const bool expectNeon = CALPED_SIMD_ENABLED;
+#else
+	const bool expectNeon = false;
+#endif
+	EXPECT_EQ(haveNeon, expectNeon);
+	if (expectNeon) {
+		EXPECT_STREQ(bestKernels().name, "neon");
+	}
+}
+
 TEST(KernelEquality, SmoothTri1)
 {
 	std::mt19937 rng(1);
@@ -58,15 +79,16 @@ TEST(KernelEquality, TriangleSum)
 	std::mt19937 rng(2);
 	for (const KernelTable *k : tablesUnderTest())
 		for (Size s : kSizes)
-			for (int r : { 1, 2, 5 }) {
-				const int stride = s.w + 2;
-				auto src = randomPlane(rng, size_t(stride) * s.h, 65535);
-				std::vector<uint32_t> a(size_t(stride) * s.h, 9), b = a;
-				std::vector<uint32_t> scratch(triSumScratchSize(s.w, s.h, r));
-				triSumR_ref(src.data(), stride, a.data(), stride, s.w, s.h, r, scratch.data());
-				k->triSum(src.data(), stride, b.data(), stride, s.w, s.h, r, scratch.data());
-				ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " r " << r;
-			}
+			for (int r : { 1, 2, 3, 5, 8, 9 }) // 9: past the unrolled radii
+				for (int offset : { 0, 1 }) {
+					const int stride = s.w + 2;
+					auto src = randomPlane(rng, size_t(stride) * s.h + offset, 65535);
+					std::vector<uint32_t> a(size_t(stride) * s.h + offset, 9), b = a;
+					std::vector<uint32_t> scratch(triSumScratchSize(s.w, s.h, r));
+					triSumR_ref(src.data() + offset, stride, a.data() + offset, stride, s.w, s.h, r, scratch.data());
+					k->triSum(src.data() + offset, stride, b.data() + offset, stride, s.w, s.h, r, scratch.data());
+					ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " r " << r << " offset " << offset;
+				}
 }
 
 TEST(KernelEquality, ResamplePlane)
@@ -82,34 +104,37 @@ TEST(KernelEquality, ResamplePlane)
 					if (!buildResampleTaps(sw, dw, 1.0, xt.data()) ||
 					    !buildResampleTaps(sh, dh, gain, yt.data()))
 						continue; // shrinking by more than the taps allow
-					auto src = randomPlane(rng, size_t(sw + 1) * sh, 65535);
-					std::vector<uint16_t> a(size_t(dw + 2) * dh, 1), b = a;
-					std::vector<uint16_t> tmp(size_t(dw) * sh);
-					resamplePlane_ref(src.data(), sw + 1, sw, sh, a.data(), dw + 2, dw, dh, xt.data(), yt.data(), tmp.data(), dw);
-					k->resamplePlane(src.data(), sw + 1, sw, sh, b.data(), dw + 2, dw, dh, xt.data(), yt.data(), tmp.data(), dw);
+					const int offset = dw % 2; // unaligned starts for odd output widths
+					auto src = randomPlane(rng, size_t(sw + 1) * sh + offset, 65535);
+					std::vector<uint16_t> a(size_t(dw + 2) * dh + offset, 1), b = a;
+					std::vector<uint16_t> tmp(size_t(dw) * sh + offset);
+					resamplePlane_ref(src.data() + offset, sw + 1, sw, sh, a.data() + offset, dw + 2, dw, dh, xt.data(), yt.data(), tmp.data() + offset, dw);
+					k->resamplePlane(src.data() + offset, sw + 1, sw, sh, b.data() + offset, dw + 2, dw, dh, xt.data(), yt.data(), tmp.data() + offset, dw);
 					ASSERT_EQ(a, b) << k->name << " " << sw << "->" << dw << " gain " << gain;
 				}
 }
 
 TEST(KernelEquality, ResamplePlaneHalvingAndLongRows)
 {
-	// Widths with several full SIMD blocks, exact halving (the computed octaves) and the
-	// ratios of approximated levels.
+	// Widths with several full SIMD blocks, exact halving (the computed octaves), the
+	// ratios of approximated levels and larger shrinking ratios (the smaller octaves).
 	std::mt19937 rng(10);
 	const std::pair<int, int> widths[] = { { 64, 32 }, { 130, 65 }, { 96, 48 }, { 192, 176 },
-					       { 144, 161 }, { 200, 117 }, { 97, 103 } };
+					       { 144, 161 }, { 200, 117 }, { 97, 103 },
+					       { 256, 64 }, { 301, 40 }, { 150, 51 } }; // and shrinking by 3 to 8
 	for (const KernelTable *k : tablesUnderTest())
-		for (auto [sw, dw] : widths) {
-			const int sh = 9, dh = 5;
-			std::vector<ResampleTap> xt(dw), yt(dh);
-			ASSERT_TRUE(buildResampleTaps(sw, dw, 1.0, xt.data()));
-			ASSERT_TRUE(buildResampleTaps(sh, dh, 1.05, yt.data()));
-			auto src = randomPlane(rng, size_t(sw + 3) * sh, 65535);
-			std::vector<uint16_t> a(size_t(dw) * dh, 1), b = a, tmp(size_t(dw) * sh);
-			resamplePlane_ref(src.data(), sw + 3, sw, sh, a.data(), dw, dw, dh, xt.data(), yt.data(), tmp.data(), dw);
-			k->resamplePlane(src.data(), sw + 3, sw, sh, b.data(), dw, dw, dh, xt.data(), yt.data(), tmp.data(), dw);
-			ASSERT_EQ(a, b) << k->name << " " << sw << "->" << dw;
-		}
+		for (auto [sw, dw] : widths)
+			for (int offset : { 0, 1 }) {
+				const int sh = 9, dh = 5;
+				std::vector<ResampleTap> xt(dw), yt(dh);
+				ASSERT_TRUE(buildResampleTaps(sw, dw, 1.0, xt.data()));
+				ASSERT_TRUE(buildResampleTaps(sh, dh, 1.05, yt.data()));
+				auto src = randomPlane(rng, size_t(sw + 3) * sh + offset, 65535);
+				std::vector<uint16_t> a(size_t(dw) * dh + offset, 1), b = a, tmp(size_t(dw) * sh + offset);
+				resamplePlane_ref(src.data() + offset, sw + 3, sw, sh, a.data() + offset, dw, dw, dh, xt.data(), yt.data(), tmp.data() + offset, dw);
+				k->resamplePlane(src.data() + offset, sw + 3, sw, sh, b.data() + offset, dw, dw, dh, xt.data(), yt.data(), tmp.data() + offset, dw);
+				ASSERT_EQ(a, b) << k->name << " " << sw << "->" << dw << " offset " << offset;
+			}
 }
 
 TEST(KernelEquality, ResampleTapsKeepFlatInputFlat)
@@ -137,17 +162,17 @@ TEST(KernelEquality, GradientMagnitudeOrientation)
 	for (const KernelTable *k : tablesUnderTest())
 		for (Size s : kSizes)
 			for (int maxValue : { 65535, 300, 3 }) { // strong edges, weak ones, near-flat
-				const int stride = s.w + 5;
+				const int stride = s.w + 5, offset = maxValue == 300 ? 1 : 0;
 				std::vector<uint16_t> planes[3];
 				const uint16_t *p[3];
 				for (int c = 0; c < 3; c++) {
-					planes[c] = randomPlane(rng, size_t(stride) * s.h, maxValue);
-					p[c] = planes[c].data();
+					planes[c] = randomPlane(rng, size_t(stride) * s.h + offset, maxValue);
+					p[c] = planes[c].data() + offset;
 				}
-				std::vector<uint16_t> ma(size_t(stride) * s.h, 1), oa = ma, mb = ma, ob = ma;
+				std::vector<uint16_t> ma(size_t(stride) * s.h + offset, 1), oa = ma, mb = ma, ob = ma;
 				std::vector<int32_t> scratch(4 * s.w + 16);
-				gradMagOrient_ref(t, p, stride, s.w, s.h, ma.data(), oa.data(), stride, scratch.data());
-				k->gradMagOrient(t, p, stride, s.w, s.h, mb.data(), ob.data(), stride, scratch.data());
+				gradMagOrient_ref(t, p, stride, s.w, s.h, ma.data() + offset, oa.data() + offset, stride, scratch.data());
+				k->gradMagOrient(t, p, stride, s.w, s.h, mb.data() + offset, ob.data() + offset, stride, scratch.data());
 				ASSERT_EQ(ma, mb) << k->name << " magnitude " << s.w << "x" << s.h;
 				ASSERT_EQ(oa, ob) << k->name << " orientation " << s.w << "x" << s.h;
 			}
@@ -157,7 +182,8 @@ TEST(KernelEquality, ResampleRgb8)
 {
 	std::mt19937 rng(5);
 	const std::pair<int, int> sizes[] = { { 1, 2 }, { 3, 6 }, { 5, 10 }, { 8, 12 }, { 13, 33 },
-					      { 16, 40 }, { 7, 17 }, { 9, 9 }, { 20, 30 }, { 30, 20 } };
+					      { 16, 40 }, { 7, 17 }, { 9, 9 }, { 20, 30 }, { 30, 20 },
+					      { 13, 26 }, { 37, 74 } }; // 2x enlargements past one SIMD block
 	for (const KernelTable *k : tablesUnderTest())
 		for (auto [n, m] : sizes)
 			for (auto [nh, mh] : sizes) {
@@ -165,13 +191,14 @@ TEST(KernelEquality, ResampleRgb8)
 				if (!buildResampleTaps(n, m, 1.0, xt.data()) || !buildResampleTaps(nh, mh, 1.0, yt.data()))
 					continue;
 				const int srcStride = 3 * n + 2, dstStride = 3 * m + 1;
-				std::vector<uint8_t> src(size_t(srcStride) * nh);
+				const int offset = (n + nh) % 3; // 0, 1 or 2 bytes past an aligned start
+				std::vector<uint8_t> src(size_t(srcStride) * nh + offset);
 				for (auto &v : src)
 					v = uint8_t(rng());
-				std::vector<uint8_t> a(size_t(dstStride) * mh, 5), b = a;
+				std::vector<uint8_t> a(size_t(dstStride) * mh + offset, 5), b = a;
 				std::vector<int32_t> row(3 * n + 8);
-				resampleRgb8_ref(src.data(), srcStride, n, nh, a.data(), dstStride, m, mh, xt.data(), yt.data(), row.data());
-				k->resampleRgb8(src.data(), srcStride, n, nh, b.data(), dstStride, m, mh, xt.data(), yt.data(), row.data());
+				resampleRgb8_ref(src.data() + offset, srcStride, n, nh, a.data() + offset, dstStride, m, mh, xt.data(), yt.data(), row.data());
+				k->resampleRgb8(src.data() + offset, srcStride, n, nh, b.data() + offset, dstStride, m, mh, xt.data(), yt.data(), row.data());
 				ASSERT_EQ(a, b) << k->name << " " << n << "x" << nh << " -> " << m << "x" << mh;
 			}
 }
@@ -219,17 +246,18 @@ TEST(KernelEquality, NormalizeMagnitude)
 		GradientTables t;
 		buildGradientTables(t, 6, 5, c);
 		for (const KernelTable *k : tablesUnderTest())
-			for (Size s : kSizes) {
-				const int stride = s.w + 1;
-				auto magIn = randomPlane(rng, size_t(stride) * s.h, 65535);
-				std::vector<uint32_t> sum(size_t(stride) * s.h);
-				for (size_t i = 0; i < sum.size(); i++)
-					sum[i] = rng() % 3 == 0 ? rng() % 4096 : uint32_t(magIn[i]) * (1 + rng() % 1296);
-				auto a = magIn, b = magIn;
-				normalizeMag_ref(t, a.data(), stride, sum.data(), stride, s.w, s.h);
-				k->normalizeMag(t, b.data(), stride, sum.data(), stride, s.w, s.h);
-				ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " c " << c;
-			}
+			for (Size s : kSizes)
+				for (int offset : { 0, 1 }) {
+					const int stride = s.w + 1;
+					auto magIn = randomPlane(rng, size_t(stride) * s.h + offset, 65535);
+					std::vector<uint32_t> sum(size_t(stride) * s.h + offset);
+					for (size_t i = 0; i < sum.size(); i++)
+						sum[i] = rng() % 3 == 0 ? rng() % 4096 : uint32_t(magIn[i]) * (1 + rng() % 1296);
+					auto a = magIn, b = magIn;
+					normalizeMag_ref(t, a.data() + offset, stride, sum.data() + offset, stride, s.w, s.h);
+					k->normalizeMag(t, b.data() + offset, stride, sum.data() + offset, stride, s.w, s.h);
+					ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " c " << c << " offset " << offset;
+				}
 	}
 }
 
@@ -238,21 +266,24 @@ TEST(KernelEquality, OrientationHistograms)
 	std::mt19937 rng(8);
 	for (const KernelTable *k : tablesUnderTest())
 		for (Size s : kSizes)
-			for (bool interpolate : { true, false }) {
-				const int stride = s.w + 3, w4 = s.w / 4, h4 = s.h / 4;
-				auto mag = randomPlane(rng, size_t(stride) * s.h, 65535);
-				auto orient = randomPlane(rng, size_t(stride) * s.h, (6 << kOrientQ) - 1);
-				std::vector<uint16_t> ha(size_t(6) * (w4 + 1) * (h4 + 1), 2), hb = ha;
-				uint16_t *pa[6], *pb[6];
-				for (int o = 0; o < 6; o++) {
-					pa[o] = ha.data() + size_t(o) * (w4 + 1) * (h4 + 1);
-					pb[o] = hb.data() + size_t(o) * (w4 + 1) * (h4 + 1);
+			for (bool interpolate : { true, false })
+				for (int nOrients : { 6, 1, 9 }) {
+					const int stride = s.w + 3, w4 = s.w / 4, h4 = s.h / 4;
+					const int offset = interpolate ? 1 : 0;
+					auto mag = randomPlane(rng, size_t(stride) * s.h + offset, 65535);
+					auto orient = randomPlane(rng, size_t(stride) * s.h + offset, (nOrients << kOrientQ) - 1);
+					const size_t plane = size_t(w4 + 1) * (h4 + 1);
+					std::vector<uint16_t> ha(nOrients * plane + offset, 2), hb = ha;
+					std::vector<uint16_t *> pa(nOrients), pb(nOrients);
+					for (int o = 0; o < nOrients; o++) {
+						pa[o] = ha.data() + offset + o * plane;
+						pb[o] = hb.data() + offset + o * plane;
+					}
+					std::vector<uint32_t> scratch(nOrients * (s.w + 4));
+					gradHist4_ref(mag.data() + offset, orient.data() + offset, stride, s.w, s.h, nOrients, interpolate, pa.data(), w4 + 1, scratch.data());
+					k->gradHist4(mag.data() + offset, orient.data() + offset, stride, s.w, s.h, nOrients, interpolate, pb.data(), w4 + 1, scratch.data());
+					ASSERT_EQ(ha, hb) << k->name << " " << s.w << "x" << s.h << " interpolate " << interpolate << " orientations " << nOrients;
 				}
-				std::vector<uint32_t> scratch(6 * (s.w + 4));
-				gradHist4_ref(mag.data(), orient.data(), stride, s.w, s.h, 6, interpolate, pa, w4 + 1, scratch.data());
-				k->gradHist4(mag.data(), orient.data(), stride, s.w, s.h, 6, interpolate, pb, w4 + 1, scratch.data());
-				ASSERT_EQ(ha, hb) << k->name << " " << s.w << "x" << s.h << " interpolate " << interpolate;
-			}
 }
 
 TEST(KernelEquality, Shrink4)
@@ -261,12 +292,12 @@ TEST(KernelEquality, Shrink4)
 	for (const KernelTable *k : tablesUnderTest())
 		for (Size s : kSizes)
 			for (int extra : { 0, 2 }) {
-				const int stride = s.w + 3, w4 = s.w / 4, h4 = s.h / 4;
-				auto src = randomPlane(rng, size_t(stride) * s.h, 65535);
-				std::vector<uint16_t> a(size_t(w4 + 2) * (h4 + 1), 4), b = a;
+				const int stride = s.w + 3, w4 = s.w / 4, h4 = s.h / 4, offset = extra ? 1 : 0;
+				auto src = randomPlane(rng, size_t(stride) * s.h + offset, 65535);
+				std::vector<uint16_t> a(size_t(w4 + 2) * (h4 + 1) + offset, 4), b = a;
 				std::vector<uint32_t> scratch(s.w + 4);
-				shrink4_ref(src.data(), stride, s.w, s.h, a.data(), w4 + 2, extra, scratch.data());
-				k->shrink4(src.data(), stride, s.w, s.h, b.data(), w4 + 2, extra, scratch.data());
+				shrink4_ref(src.data() + offset, stride, s.w, s.h, a.data() + offset, w4 + 2, extra, scratch.data());
+				k->shrink4(src.data() + offset, stride, s.w, s.h, b.data() + offset, w4 + 2, extra, scratch.data());
 				ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " extra shift " << extra;
 			}
 }

@@ -69,31 +69,40 @@ inline void triangleRow(const uint32_t *q, int n, int r, uint32_t *box, uint32_t
 	}
 }
 
-inline void triSumRBody(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
-		 int width, int height, int r, uint32_t *scratch)
-{
-	// scratch (triSumScratchSize): the horizontal result (width x height), then one padded
-	// row, one box row, the ring of r + 1 box rows and two accumulator rows.
-	uint32_t *horiz = scratch;
-	uint32_t *padded = horiz + size_t(width) * height;
-	uint32_t *boxRow = padded + width + 2 * r;
-	uint32_t *ring = boxRow + width + r;
-	uint32_t *acc1 = ring + size_t(r + 1) * width;
-	uint32_t *acc2 = acc1 + width;
-
-	for (int y = 0; y < height; y++) {
-		const uint16_t *row = src + y * srcStride;
-		for (int i = 0; i < r; i++) {
-			padded[i] = row[reflect(i - r, width)];
-			padded[width + r + i] = row[reflect(width + i, width)];
-		}
-		for (int x = 0; x < width; x++)
-			padded[r + x] = row[x];
-		triangleRow(padded, width, r, boxRow, horiz + size_t(y) * width);
+// Where triSumRBody keeps its intermediate rows in the scratch of triSumScratchSize: the
+// horizontal result (width x height), then one padded row, one box row, the ring of r + 1
+// box rows and two accumulator rows.
+struct TriSumScratch {
+	uint32_t *horiz, *padded, *boxRow, *ring, *acc1, *acc2;
+	TriSumScratch(uint32_t *scratch, int width, int height, int r)
+	{
+		horiz = scratch;
+		padded = horiz + size_t(width) * height;
+		boxRow = padded + width + 2 * r;
+		ring = boxRow + width + r;
+		acc1 = ring + size_t(r + 1) * width;
+		acc2 = acc1 + width;
 	}
+};
 
-	// Vertical: the same two running sums, a column per lane, over whole rows.
-	auto q = [&](int m) { return horiz + size_t(reflect(m - r, height)) * width; };
+// Row y of src with r samples of symmetric padding on each side: padded[0 .. width + 2r).
+inline void padRow(const uint16_t *row, int width, int r, uint32_t *padded)
+{
+	for (int i = 0; i < r; i++) {
+		padded[i] = row[reflect(i - r, width)];
+		padded[width + r + i] = row[reflect(width + i, width)];
+	}
+	for (int x = 0; x < width; x++)
+		padded[r + x] = row[x];
+}
+
+// The vertical pass: the same two running sums as triangleRow, a column per lane, over
+// whole rows of the horizontal result s.horiz, into dst.
+inline void triSumColumnsBody(const TriSumScratch &s, uint32_t *dst, ptrdiff_t dstStride,
+			      int width, int height, int r)
+{
+	auto q = [&](int m) { return s.horiz + size_t(reflect(m - r, height)) * width; };
+	uint32_t *acc1 = s.acc1, *acc2 = s.acc2;
 	for (int x = 0; x < width; x++)
 		acc1[x] = acc2[x] = 0;
 	for (int j = 0; j < r; j++) {
@@ -104,7 +113,7 @@ inline void triSumRBody(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst,
 	for (int m = 0; m < height + r; m++) {
 		const uint32_t *in = q(m + r);
 		const uint32_t *leaving = q(m);
-		uint32_t *box = ring + size_t(m % (r + 1)) * width;
+		uint32_t *box = s.ring + size_t(m % (r + 1)) * width;
 		for (int x = 0; x < width; x++) {
 			acc1[x] += in[x];
 			box[x] = acc1[x];
@@ -114,13 +123,24 @@ inline void triSumRBody(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst,
 		if (m >= r) {
 			const int y = m - r;
 			uint32_t *out = dst + y * dstStride;
-			const uint32_t *oldest = ring + size_t(y % (r + 1)) * width;
+			const uint32_t *oldest = s.ring + size_t(y % (r + 1)) * width;
 			for (int x = 0; x < width; x++) {
 				out[x] = acc2[x];
 				acc2[x] -= oldest[x];
 			}
 		}
 	}
+}
+
+inline void triSumRBody(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
+		 int width, int height, int r, uint32_t *scratch)
+{
+	const TriSumScratch s(scratch, width, height, r);
+	for (int y = 0; y < height; y++) {
+		padRow(src + y * srcStride, width, r, s.padded);
+		triangleRow(s.padded, width, r, s.boxRow, s.horiz + size_t(y) * width);
+	}
+	triSumColumnsBody(s, dst, dstStride, width, height, r);
 }
 
 } // namespace

@@ -21,10 +21,11 @@ void normalizeMag_avx2(const GradientTables &t, uint16_t *mag, ptrdiff_t magStri
 			const __m256i d = _mm256_add_epi32(
 				_mm256_loadu_si256(reinterpret_cast<const __m256i *>(srow + x)),
 				_mm256_set1_epi32(int(t.normConst)));
-			// Exponents that would need a left shift of the product, and zero
-			// denominators, are rare (normConst ~ 0): leave those blocks to the scalar code.
+			// Denominators below 2^11 (negative exponents: the mantissa needs a left
+			// shift, which srlv cannot do), zero ones included, are rare (normConst ~ 0):
+			// leave those blocks to the scalar code.
 			const __m256i k = _mm256_sub_epi32(bitLength8(d), _mm256_set1_epi32(12));
-			if (!_mm256_testz_si256(_mm256_cmpgt_epi32(_mm256_set1_epi32(-1), k),
+			if (!_mm256_testz_si256(_mm256_cmpgt_epi32(_mm256_setzero_si256(), k),
 						_mm256_set1_epi32(-1)))
 				break;
 			const __m256i m = _mm256_srlv_epi32(d, k);
