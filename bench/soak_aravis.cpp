@@ -168,6 +168,7 @@ int main(int argc, char **argv)
 	long rssStart = -1, rssMiddle = -1;
 	uint64_t processed = 0, processedSteady = 0, detections = 0, errors = 0;
 	long allocSteady = 0; // operator new calls outside the restart window
+	const long allocAtStart = gAllocations.load();
 	bool restarted = false, backAfterRestart = false;
 	double killedAt = 0, camUpAt = 0, backAt = 0;
 	double nextReport = 60;
@@ -225,6 +226,7 @@ int main(int argc, char **argv)
 		}
 	}
 	const long rssEnd = rssKiB();
+	const long allocTotal = gAllocations.load() - allocAtStart;
 	const SourceStats s = src->stats();
 	const AravisStats t = src->transportStats();
 	src->stop();
@@ -232,11 +234,12 @@ int main(int argc, char **argv)
 	std::printf("frames processed         %llu (%.1f fps), detections %llu, detect errors %llu\n",
 		    (unsigned long long)processed, processed / o.duration, (unsigned long long)detections,
 		    (unsigned long long)errors);
-	std::printf("delivered / dropped      %llu / %llu (of which underruns %llu)\n",
+	std::printf("delivered / dropped      %llu / %llu (of which never seen %llu; Aravis's "
+		    "n_underruns %llu)\n",
 		    (unsigned long long)s.delivered, (unsigned long long)s.dropped,
-		    (unsigned long long)t.underruns);
-	std::printf("incomplete               %llu: missing packets %llu, frame timeout %llu, other %llu, "
-		    "never seen %llu\n",
+		    (unsigned long long)t.unseenFrames, (unsigned long long)t.underruns);
+	std::printf("incomplete               %llu: missing packets %llu, frame timeout %llu, other %llu "
+		    "(Aravis's n_missing_frames %llu)\n",
 		    (unsigned long long)s.incomplete, (unsigned long long)t.incompleteMissingPackets,
 		    (unsigned long long)t.incompleteTimeout, (unsigned long long)t.incompleteOther,
 		    (unsigned long long)t.missingFrames);
@@ -249,6 +252,8 @@ int main(int argc, char **argv)
 	std::printf("operator new per frame   %.4f (%ld calls over %llu steady-state frames)\n",
 		    processedSteady ? static_cast<double>(allocSteady) / processedSteady : 0.0, allocSteady,
 		    (unsigned long long)processedSteady);
+	std::printf("operator new, whole loop %ld calls (start-up and the reconnection included)\n",
+		    allocTotal);
 	if (restarted)
 		std::printf("restart                  killed at %.1f s, camera up at %.1f s, first frame at "
 			    "%.1f s: %.2f s after the kill, %.2f s after the camera was back\n",

@@ -53,9 +53,9 @@ public:
 	void appendStats(char *line, size_t size) const override
 	{
 		const calped::ports::AravisStats t = source_.transportStats();
-		std::snprintf(line, size, ", resent packets %" PRIu64 ", missing packets %" PRIu64
-				  ", underruns %" PRIu64,
-			      t.resentPackets, t.missingPackets, t.underruns);
+		std::snprintf(line, size, ", never seen %" PRIu64 ", resent packets %" PRIu64
+				  ", missing packets %" PRIu64,
+			      t.unseenFrames, t.resentPackets, t.missingPackets);
 	}
 
 private:
@@ -80,6 +80,9 @@ int run(int argc, char **argv)
 	std::vector<live::Arg> args;
 	std::string error;
 	if (!live::splitArgs(argc, argv, { "--packet-socket", "--no-packet-resend", "--reconnect" },
+			     { "--camera", "--pixel-format", "--width", "--height", "--fps", "--buffers",
+			       "--packet-size", "--socket-buffer", "--packet-timeout", "--frame-retention",
+			       "--lost-after" },
 			     args, error))
 		return cliFail(kProgram, kExitUsage, error);
 	live::LiveOptions options;

@@ -36,9 +36,13 @@ bool parseWhole(const std::string &text, long &out)
 }
 
 bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
-	       std::vector<Arg> &out, std::string &error)
+	       const std::vector<std::string> &valued, std::vector<Arg> &out, std::string &error)
 {
 	static const char *const kCommonFlags[] = { "--quiet", "--help", "-h" };
+	static const char *const kCommonValued[] = { "--model", "--calib", "--method", "--resize",
+						     "--min-height", "--max-height", "--overlay",
+						     "--overlay-every", "--frames", "--timeout",
+						     "--stats-every" };
 	out.clear();
 	for (int i = 1; i < argc; i++) {
 		const std::string text = argv[i];
@@ -58,6 +62,13 @@ bool splitArgs(int argc, const char *const *argv, const std::vector<std::string>
 		bool isFlag = std::find(flags.begin(), flags.end(), arg.name) != flags.end();
 		for (const char *f : kCommonFlags)
 			isFlag = isFlag || arg.name == f;
+		bool isValued = std::find(valued.begin(), valued.end(), arg.name) != valued.end();
+		for (const char *v : kCommonValued)
+			isValued = isValued || arg.name == v;
+		if (!isFlag && !isValued) {
+			error = "unknown option '" + arg.name + "' (try --help)";
+			return false;
+		}
 		if (isFlag && arg.hasValue) {
 			error = arg.name + " takes no value";
 			return false;

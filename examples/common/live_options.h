@@ -33,10 +33,11 @@ struct Arg {
 	bool hasValue = false;
 };
 
-// Splits argv into options. `flags` lists the options that take no value (the common
-// ones are added); every other option takes one. Positional arguments are refused.
+// Splits argv into options. `flags` lists the example's options without a value,
+// `valued` those with one (the common options are added to both); anything else is an
+// unknown option, and positional arguments are refused.
 bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
-	       std::vector<Arg> &out, std::string &error);
+	       const std::vector<std::string> &valued, std::vector<Arg> &out, std::string &error);
 
 enum class ParseResult { NotMine, Ok, Error };
 

@@ -38,7 +38,7 @@ int run(int argc, char **argv)
 	using namespace calped;
 	std::vector<live::Arg> args;
 	std::string error;
-	if (!live::splitArgs(argc, argv, { "--loop" }, args, error))
+	if (!live::splitArgs(argc, argv, { "--loop" }, { "--input", "--fps" }, args, error))
 		return cliFail(kProgram, kExitUsage, error);
 	live::LiveOptions options;
 	ports::FileSourceOptions source;

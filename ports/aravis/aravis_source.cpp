@@ -195,6 +195,7 @@ Status AravisSource::connect()
 			g_free(text);
 		}
 	}
+	haveFrameId_ = false; // a restarted camera numbers its frames afresh
 	controlLost_ = false;
 	dead_ = false;
 	lostHandler_ = g_signal_connect(arv_camera_get_device(camera_), "control-lost",
@@ -313,6 +314,7 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 			stream_, static_cast<guint64>(std::min<int64_t>(left.count(), kPollMs * 1000)));
 		if (!b)
 			continue;
+		noteFrameId(arv_buffer_get_frame_id(b));
 		if (arv_buffer_get_status(b) != ARV_BUFFER_STATUS_SUCCESS) {
 			const ArvBufferStatus s = arv_buffer_get_status(b);
 			stats_.incomplete++;
@@ -325,6 +327,7 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 		newest = b;
 		// Drop policy: lend the newest complete frame; older ones go back to the pool.
 		while ((b = arv_stream_try_pop_buffer(stream_)) != nullptr) {
+			noteFrameId(arv_buffer_get_frame_id(b));
 			if (arv_buffer_get_status(b) == ARV_BUFFER_STATUS_SUCCESS) {
 				arv_stream_push_buffer(stream_, newest);
 				stats_.dropped++;
@@ -482,12 +485,37 @@ void AravisSource::stop()
 	reconnecting_ = false;
 }
 
+void AravisSource::noteFrameId(uint64_t id)
+{
+	// Frames that never came out of Aravis (no free buffer, or no packet of them arrived)
+	// show as gaps in the block ids. GigE Vision 1.x ids are 16 bits and wrap.
+	if (!haveFrameId_) {
+		haveFrameId_ = true;
+		maxFrameId_ = id;
+		return;
+	}
+	int64_t delta = static_cast<int64_t>(id) - static_cast<int64_t>(maxFrameId_);
+	if (id <= 0xffff && maxFrameId_ <= 0xffff) {
+		if (delta < -32768)
+			delta += 65536;
+		else if (delta > 32768)
+			delta -= 65536;
+	}
+	if (delta > 0) {
+		transport_.unseenFrames += static_cast<uint64_t>(delta - 1);
+		maxFrameId_ = id;
+	} else if (delta < 0 && transport_.unseenFrames > 0) {
+		transport_.unseenFrames--; // a late frame, counted as a gap before
+	}
+}
+
 SourceStats AravisSource::stats() const
 {
 	SourceStats s = stats_;
-	const AravisStats t = transportStats();
-	s.dropped += t.underruns;          // frames the camera sent while every buffer was busy
-	s.incomplete += t.missingFrames;   // frames of which not one packet arrived
+	// A frame the consumer never got because no buffer was free, or that never arrived
+	// at all: counted with the drops (Aravis's own underrun counter counts packets, not
+	// frames, so it is reported apart).
+	s.dropped += transport_.unseenFrames;
 	return s;
 }
 

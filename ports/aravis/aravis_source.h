@@ -54,8 +54,9 @@ struct AravisStats {
 	uint64_t incompleteMissingPackets = 0; // buffers handed back as MISSING_PACKETS
 	uint64_t incompleteTimeout = 0;        // ... as TIMEOUT (frame retention expired)
 	uint64_t incompleteOther = 0;          // ... any other failed status
-	uint64_t underruns = 0;                // frames Aravis had no free buffer for
-	uint64_t missingFrames = 0;            // block ids that never arrived at all
+	uint64_t unseenFrames = 0;             // block ids that never came out of Aravis (in dropped)
+	uint64_t underruns = 0;                // Aravis's n_underruns (counts packets without a buffer)
+	uint64_t missingFrames = 0;            // Aravis's n_missing_frames
 	uint64_t resentPackets = 0;            // packets recovered by resend
 	uint64_t missingPackets = 0;           // packets never recovered
 	uint64_t lostEvents = 0;               // times the camera was found lost
@@ -98,6 +99,7 @@ private:
 	Status startAcquisition();
 	void disconnect();    // everything connect() made, in reverse; tolerates a dead camera
 	void releaseDeadCamera();
+	void noteFrameId(uint64_t id);
 	void accumulateStreamCounters();
 	bool cameraAnswers();
 	Status lost(const char *why); // CameraLost, or start reconnecting
@@ -121,6 +123,8 @@ private:
 	std::thread reaper_; // releases a dead camera (see releaseDeadCamera)
 	size_t payload_ = 0;
 	bool socketPresized_ = false;
+	bool haveFrameId_ = false;
+	uint64_t maxFrameId_ = 0;
 	int width_ = 0, height_ = 0;
 
 	using Clock = std::chrono::steady_clock;
