@@ -200,7 +200,9 @@ int main(int argc, char **argv)
 			processed++;
 			if (rssStart < 0 && processed == 25)
 				rssStart = rssKiB();
-			if (restarted && !backAfterRestart) {
+			// Back: the first frame of the new connection (frames queued before the
+			// kill still come out of the old one first).
+			if (restarted && !backAfterRestart && src->stats().restarts > 0) {
 				backAfterRestart = true;
 				backAt = seconds();
 			}

@@ -265,6 +265,9 @@ TEST(AravisSource, PacketLossNeverLendsADamagedFrame)
 				continue;
 			ASSERT_TRUE(st.ok()) << st.message();
 			lent++;
+			// Mono8 is lent as Gray8, in place in Aravis's buffer (tight rows here).
+			ASSERT_EQ(frame.image.format, PixelFormat::Gray8);
+			ASSERT_EQ(frame.image.strides[0], frame.image.width);
 			damaged += !isIntactRamp(frame.image);
 		}
 		src->stop();
