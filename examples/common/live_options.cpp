@@ -35,8 +35,10 @@ bool parseWhole(const std::string &text, long &out)
 	return true;
 }
 
-bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
-	       const std::vector<std::string> &valued, std::vector<Arg> &out, std::string &error)
+namespace {
+
+bool split(int argc, const char *const *argv, const std::vector<std::string> &flags,
+	   const std::vector<std::string> *valued, std::vector<Arg> &out, std::string &error)
 {
 	static const char *const kCommonFlags[] = { "--quiet", "--help", "-h" };
 	static const char *const kCommonValued[] = { "--model", "--calib", "--method", "--resize",
@@ -62,7 +64,7 @@ bool splitArgs(int argc, const char *const *argv, const std::vector<std::string>
 		bool isFlag = std::find(flags.begin(), flags.end(), arg.name) != flags.end();
 		for (const char *f : kCommonFlags)
 			isFlag = isFlag || arg.name == f;
-		bool isValued = std::find(valued.begin(), valued.end(), arg.name) != valued.end();
+		bool isValued = !valued || std::find(valued->begin(), valued->end(), arg.name) != valued->end();
 		for (const char *v : kCommonValued)
 			isValued = isValued || arg.name == v;
 		if (!isFlag && !isValued) {
@@ -84,6 +86,20 @@ bool splitArgs(int argc, const char *const *argv, const std::vector<std::string>
 		out.push_back(arg);
 	}
 	return true;
+}
+
+} // namespace
+
+bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
+	       const std::vector<std::string> &valued, std::vector<Arg> &out, std::string &error)
+{
+	return split(argc, argv, flags, &valued, out, error);
+}
+
+bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
+	       std::vector<Arg> &out, std::string &error)
+{
+	return split(argc, argv, flags, nullptr, out, error);
 }
 
 ParseResult parseLiveOption(const Arg &arg, LiveOptions &out, std::string &error)

@@ -38,6 +38,10 @@ struct Arg {
 // unknown option, and positional arguments are refused.
 bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
 	       const std::vector<std::string> &valued, std::vector<Arg> &out, std::string &error);
+// The first form (kept for examples written against it): every option not in `flags`
+// takes a value, and the caller reports unknown names.
+bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
+	       std::vector<Arg> &out, std::string &error);
 
 enum class ParseResult { NotMine, Ok, Error };
 
