@@ -505,6 +505,10 @@ TEST(AravisSource, PetsFramesThroughTheFakeCameraDetectLikeTheFileRun)
 	size_t expectedBoxes = 0;
 	for (const auto &e : expected)
 		expectedBoxes += e.size();
+	std::printf("[ pets     ] lent %d: PETS frames 1-4 seen %d/%d/%d/%d times; file-run boxes "
+		    "%zu/%zu/%zu/%zu; mismatched %d, unknown %d\n",
+		    lent, seen[0], seen[1], seen[2], seen[3], expected[0].size(), expected[1].size(),
+		    expected[2].size(), expected[3].size(), mismatched, unknown);
 	EXPECT_GT(expectedBoxes, 0u) << "PETS frames with people should give detections";
 }
 
