@@ -1,0 +1,513 @@
+// SPDX-License-Identifier: BSD-2-Clause
+#include "libcamera_source.h"
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <vector>
+
+#include <libcamera/camera.h>
+#include <libcamera/camera_manager.h>
+#include <libcamera/control_ids.h>
+#include <libcamera/controls.h>
+#include <libcamera/framebuffer.h>
+#include <libcamera/framebuffer_allocator.h>
+#include <libcamera/request.h>
+#include <libcamera/stream.h>
+
+#include "format_map.h"
+#include "frame_queue.h"
+#include "plane_mapping.h"
+
+namespace calped {
+namespace ports {
+
+namespace {
+
+// After this many failed or cancelled frames in a row the camera counts as lost: a broken
+// pipeline would otherwise have its requests cancelled and requeued forever.
+constexpr int kMaxFailuresInARow = 64;
+
+// libcamera aborts the process when a second CameraManager is created, so every source in
+// the process shares one, created (and started) on first use and destroyed with the last
+// source. The deleter takes the lock too, so a new manager never overlaps a dying one.
+std::mutex gManagerMutex;
+std::weak_ptr<libcamera::CameraManager> gManager;
+
+Status sharedCameraManager(bool quietLog, std::shared_ptr<libcamera::CameraManager> &out)
+{
+	// Declared before the lock: a manager that failed to start is deleted after unlocking
+	// (its deleter takes the lock).
+	std::shared_ptr<libcamera::CameraManager> manager;
+	std::lock_guard<std::mutex> lock(gManagerMutex);
+	if ((manager = gManager.lock())) {
+		out = manager;
+		return Status::success();
+	}
+	// libcamera reads its log levels once, when it first logs.
+	if (quietLog)
+		setenv("LIBCAMERA_LOG_LEVELS", "*:ERROR", 0);
+	manager.reset(new libcamera::CameraManager(), [](libcamera::CameraManager *m) {
+		std::lock_guard<std::mutex> deleting(gManagerMutex);
+		delete m; // stops it
+	});
+	int ret = manager->start();
+	if (ret < 0)
+		return Status::error(ErrorCode::CameraError,
+				     "libcamera's camera manager failed to start: %s",
+				     std::strerror(-ret));
+	gManager = manager;
+	out = manager;
+	return Status::success();
+}
+
+bool allDigits(const std::string &s)
+{
+	if (s.empty())
+		return false;
+	for (char c : s)
+		if (c < '0' || c > '9')
+			return false;
+	return true;
+}
+
+// The camera named by id, or by index into the manager's list. CameraNotFound lists what
+// exists (as much as the fixed-size message holds) or says that nothing does.
+Status findCamera(const libcamera::CameraManager &manager, const std::string &wanted,
+		  std::shared_ptr<libcamera::Camera> &out)
+{
+	std::vector<std::shared_ptr<libcamera::Camera>> cameras = manager.cameras();
+	if (cameras.empty())
+		return Status::error(ErrorCode::CameraNotFound,
+				     "libcamera found no camera%s%s%s (`cam --list` shows what libcamera "
+				     "sees; check the camera is connected and enabled, and access to "
+				     "/dev/media* and /dev/video*)",
+				     wanted.empty() ? "" : " (asked for '", wanted.c_str(),
+				     wanted.empty() ? "" : "')");
+	if (wanted.empty()) {
+		out = cameras.front();
+		return Status::success();
+	}
+	for (const auto &camera : cameras) {
+		if (camera->id() == wanted) {
+			out = camera;
+			return Status::success();
+		}
+	}
+	if (allDigits(wanted) && wanted.size() < 6) {
+		size_t index = std::strtoul(wanted.c_str(), nullptr, 10);
+		if (index < cameras.size()) {
+			out = cameras[index];
+			return Status::success();
+		}
+	}
+	std::string list;
+	for (size_t i = 0; i < cameras.size(); ++i)
+		list += (i ? ", " : "") + std::to_string(i) + " '" + cameras[i]->id() + "'";
+	return Status::error(ErrorCode::CameraNotFound,
+			     "no libcamera camera '%s' (id or index); %zu exist: %s", wanted.c_str(),
+			     cameras.size(), list.c_str());
+}
+
+libcamera::StreamRole roleFor(PixelFormat format)
+{
+	switch (format) {
+	case PixelFormat::BayerRGGB8:
+	case PixelFormat::BayerGRBG8:
+	case PixelFormat::BayerGBRG8:
+	case PixelFormat::BayerBGGR8:
+		return libcamera::StreamRole::Raw;
+	case PixelFormat::RGB8:
+	case PixelFormat::BGR8:
+		return libcamera::StreamRole::Viewfinder;
+	default:
+		return libcamera::StreamRole::VideoRecording;
+	}
+}
+
+class LibcameraSource final : public FrameSource
+{
+public:
+	~LibcameraSource() override;
+
+	Status open(const LibcameraOptions &options);
+
+	Status start() override;
+	Status next(Frame &frame, int timeoutMs) override;
+	void release() override;
+	void stop() override;
+	SourceStats stats() const override { return queue_.stats(); }
+	const char *name() const override { return name_; }
+
+private:
+	Status configure(const LibcameraOptions &options);
+	Status frameRateControls(double fps);
+	Status allocateAndMap();
+
+	// libcamera's thread.
+	void onRequestCompleted(libcamera::Request *request);
+	void onDisconnected();
+	// Either thread: hands a slot's request back to the camera.
+	void requeue(int slot);
+
+	std::shared_ptr<libcamera::CameraManager> manager_;
+	std::shared_ptr<libcamera::Camera> camera_;
+	bool acquired_ = false;
+	bool connected_ = false;
+	std::unique_ptr<libcamera::CameraConfiguration> config_;
+	libcamera::Stream *stream_ = nullptr;
+	std::unique_ptr<libcamera::ControlList> startControls_;
+	std::unique_ptr<libcamera::FrameBufferAllocator> allocator_;
+	std::vector<BufferMapping> mappings_;
+	std::vector<ImageView> views_;
+	std::vector<std::unique_ptr<libcamera::Request>> requests_;
+
+	FrameQueue queue_;
+	bool streaming_ = false;
+	std::atomic<bool> disconnected_{ false };
+	std::atomic<int> failuresInARow_{ 0 };
+	char id_[128] = "";
+	char name_[256] = "libcamera";
+};
+
+Status LibcameraSource::open(const LibcameraOptions &options)
+{
+	if (options.buffers < 2 || options.buffers > 16)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "libcamera buffer count must be 2..16, got %d", options.buffers);
+	if (options.width < 0 || options.height < 0 || (options.width == 0) != (options.height == 0))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "libcamera frame size %dx%d: give both width and height, or neither",
+				     options.width, options.height);
+	if (!(options.fps >= 0 && options.fps <= 1000))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "libcamera frame rate must be 0 (camera default) to 1000, got %g",
+				     options.fps);
+
+	Status st = sharedCameraManager(options.quietLibcameraLog, manager_);
+	if (!st.ok())
+		return st;
+	if (!(st = findCamera(*manager_, options.camera, camera_)).ok())
+		return st;
+	std::snprintf(id_, sizeof(id_), "%s", camera_->id().c_str());
+
+	int ret = camera_->acquire();
+	if (ret < 0)
+		return Status::error(ErrorCode::CameraError, "camera '%s' cannot be acquired: %s%s",
+				     id_, std::strerror(-ret),
+				     ret == -EBUSY ? " (in use by another program or source)" : "");
+	acquired_ = true;
+
+	if (!(st = configure(options)).ok() || !(st = frameRateControls(options.fps)).ok() ||
+	    !(st = allocateAndMap()).ok())
+		return st;
+
+	camera_->requestCompleted.connect(this, &LibcameraSource::onRequestCompleted);
+	camera_->disconnected.connect(this, &LibcameraSource::onDisconnected);
+	connected_ = true;
+	return Status::success();
+}
+
+Status LibcameraSource::configure(const LibcameraOptions &options)
+{
+	libcamera::PixelFormat wanted;
+	if (!libcameraFormatFor(options.format, wanted))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "libcamera has no pixel format for calped's %s",
+				     pixelFormatName(options.format));
+
+	config_ = camera_->generateConfiguration({ roleFor(options.format) });
+	if (!config_ || config_->empty())
+		return Status::error(ErrorCode::CameraError,
+				     "camera '%s' has no stream configuration for %s", id_,
+				     pixelFormatName(options.format));
+	libcamera::StreamConfiguration &cfg = config_->at(0);
+	cfg.pixelFormat = wanted;
+	if (options.width > 0)
+		cfg.size = libcamera::Size(options.width, options.height);
+	cfg.bufferCount = options.buffers;
+
+	if (config_->validate() == libcamera::CameraConfiguration::Invalid)
+		return Status::error(ErrorCode::CameraError,
+				     "camera '%s' rejects the configuration %s", id_,
+				     cfg.toString().c_str());
+	if (cfg.pixelFormat != wanted) {
+		std::string offered;
+		for (const libcamera::PixelFormat &f : cfg.formats().pixelformats())
+			offered += (offered.empty() ? "" : ", ") + f.toString();
+		return Status::error(ErrorCode::CameraError,
+				     "camera '%s' cannot deliver %s; it offers %s", id_,
+				     wanted.toString().c_str(), offered.empty() ? "nothing" : offered.c_str());
+	}
+	int ret = camera_->configure(config_.get());
+	if (ret < 0)
+		return Status::error(ErrorCode::CameraError, "camera '%s' refused %s: %s", id_,
+				     cfg.toString().c_str(), std::strerror(-ret));
+	stream_ = cfg.stream();
+
+	char asked[48] = "";
+	if (options.width > 0 && (int(cfg.size.width) != options.width ||
+				  int(cfg.size.height) != options.height))
+		std::snprintf(asked, sizeof(asked), " (asked %dx%d)", options.width, options.height);
+	std::snprintf(name_, sizeof(name_), "libcamera:%s %s %ux%u%s stride %u, %u buffers", id_,
+		      wanted.toString().c_str(), cfg.size.width, cfg.size.height, asked, cfg.stride,
+		      cfg.bufferCount);
+	return Status::success();
+}
+
+// A rate is a fixed frame duration: FrameDurationLimits = {d, d} microseconds.
+Status LibcameraSource::frameRateControls(double fps)
+{
+	if (fps <= 0)
+		return Status::success();
+	const libcamera::ControlInfoMap &controls = camera_->controls();
+	auto info = controls.find(&libcamera::controls::FrameDurationLimits);
+	if (info == controls.end())
+		return Status::error(ErrorCode::CameraError,
+				     "camera '%s' has no FrameDurationLimits control: its frame rate "
+				     "cannot be set (leave the rate at the camera's default)",
+				     id_);
+	int64_t duration = static_cast<int64_t>(1e6 / fps + 0.5);
+	const libcamera::ControlValue &min = info->second.min();
+	const libcamera::ControlValue &max = info->second.max();
+	if (min.type() == libcamera::ControlTypeInteger64 && !min.isArray() &&
+	    max.type() == libcamera::ControlTypeInteger64 && !max.isArray()) {
+		int64_t lo = min.get<int64_t>(), hi = max.get<int64_t>();
+		if (duration < lo || (hi > 0 && duration > hi))
+			return Status::error(ErrorCode::CameraError,
+					     "camera '%s' cannot run at %g fps: frame durations %lld..%lld us "
+					     "(%g..%g fps)",
+					     id_, fps, static_cast<long long>(lo), static_cast<long long>(hi),
+					     hi > 0 ? 1e6 / double(hi) : 0.0, lo > 0 ? 1e6 / double(lo) : 0.0);
+	}
+	startControls_ = std::make_unique<libcamera::ControlList>(controls);
+	int64_t limits[2] = { duration, duration };
+	startControls_->set(libcamera::controls::FrameDurationLimits,
+			    libcamera::Span<const int64_t, 2>(limits));
+	return Status::success();
+}
+
+// A fixed pool: every buffer is mapped and described as an ImageView once, here.
+Status LibcameraSource::allocateAndMap()
+{
+	allocator_ = std::make_unique<libcamera::FrameBufferAllocator>(camera_);
+	int ret = allocator_->allocate(stream_);
+	if (ret < 0)
+		return Status::error(ErrorCode::CameraError,
+				     "camera '%s': allocating frame buffers failed: %s", id_,
+				     std::strerror(-ret));
+	const auto &buffers = allocator_->buffers(stream_);
+	if (buffers.empty())
+		return Status::error(ErrorCode::CameraError, "camera '%s' allocated no frame buffers",
+				     id_);
+
+	const libcamera::StreamConfiguration &cfg = config_->at(0);
+	const YuvEncoding encoding = yuvEncodingFor(cfg.colorSpace);
+	mappings_.resize(buffers.size());
+	views_.resize(buffers.size());
+	requests_.reserve(buffers.size());
+	for (size_t i = 0; i < buffers.size(); ++i) {
+		const libcamera::FrameBuffer &buffer = *buffers[i];
+		PlaneDesc planes[BufferMapping::kMaxPlanes];
+		int count = static_cast<int>(buffer.planes().size());
+		if (count > BufferMapping::kMaxPlanes)
+			return Status::error(ErrorCode::CameraError,
+					     "camera '%s': buffer %zu has %d planes", id_, i, count);
+		for (int p = 0; p < count; ++p) {
+			const libcamera::FrameBuffer::Plane &plane = buffer.planes()[p];
+			if (plane.offset == libcamera::FrameBuffer::Plane::kInvalidOffset)
+				return Status::error(ErrorCode::CameraError,
+						     "camera '%s': buffer %zu plane %d has no offset", id_,
+						     i, p);
+			planes[p] = PlaneDesc{ plane.fd.get(), plane.offset, plane.length };
+		}
+		char what[200];
+		std::snprintf(what, sizeof(what), "camera '%s' buffer %zu", id_, i);
+		Status st = mappings_[i].map(planes, count, what);
+		if (!st.ok())
+			return st;
+		st = frameView(cfg.pixelFormat, static_cast<int>(cfg.size.width),
+			       static_cast<int>(cfg.size.height), cfg.stride, mappings_[i].planes(),
+			       count, encoding, views_[i]);
+		if (!st.ok())
+			return st;
+
+		std::unique_ptr<libcamera::Request> request = camera_->createRequest(i);
+		if (!request)
+			return Status::error(ErrorCode::CameraError,
+					     "camera '%s' could not create request %zu", id_, i);
+		ret = request->addBuffer(stream_, buffers[i].get());
+		if (ret < 0)
+			return Status::error(ErrorCode::CameraError,
+					     "camera '%s': adding buffer %zu to its request failed: %s",
+					     id_, i, std::strerror(-ret));
+		requests_.push_back(std::move(request));
+	}
+	return Status::success();
+}
+
+Status LibcameraSource::start()
+{
+	if (streaming_)
+		return Status::success();
+	if (disconnected_)
+		return Status::error(ErrorCode::CameraLost, "camera '%s' was disconnected", id_);
+	queue_.begin();
+	failuresInARow_ = 0;
+	int ret = camera_->start(startControls_.get());
+	if (ret < 0)
+		return Status::error(ret == -ENODEV ? ErrorCode::CameraLost : ErrorCode::CameraError,
+				     "camera '%s' failed to start: %s", id_, std::strerror(-ret));
+	streaming_ = true;
+	for (auto &request : requests_) {
+		request->reuse(libcamera::Request::ReuseBuffers);
+		ret = camera_->queueRequest(request.get());
+		if (ret < 0) {
+			stop();
+			return Status::error(ErrorCode::CameraError,
+					     "camera '%s' refused a capture request: %s", id_,
+					     std::strerror(-ret));
+		}
+	}
+	return Status::success();
+}
+
+Status LibcameraSource::next(Frame &frame, int timeoutMs)
+{
+	if (!streaming_) {
+		if (disconnected_)
+			return Status::error(ErrorCode::CameraLost, "camera '%s' was disconnected", id_);
+		return Status::error(ErrorCode::CameraError, "camera '%s' is not streaming (start() first)",
+				     id_);
+	}
+	release();
+	FrameQueue::Taken taken;
+	switch (queue_.take(timeoutMs, taken)) {
+	case FrameQueue::Wait::Frame:
+		frame.image = views_[taken.slot];
+		frame.id = taken.sequence;
+		frame.timestampNs = taken.timestampNs;
+		return Status::success();
+	case FrameQueue::Wait::Timeout:
+		return Status::error(ErrorCode::Timeout, "camera '%s' sent no frame in %d ms", id_,
+				     timeoutMs);
+	case FrameQueue::Wait::Lost:
+		return queue_.lostStatus();
+	case FrameQueue::Wait::Halted:
+		break;
+	}
+	return Status::error(ErrorCode::CameraError, "camera '%s' was stopped", id_);
+}
+
+void LibcameraSource::release()
+{
+	int slot = queue_.giveBack();
+	if (slot >= 0)
+		requeue(slot);
+}
+
+void LibcameraSource::requeue(int slot)
+{
+	libcamera::Request *request = requests_[slot].get();
+	request->reuse(libcamera::Request::ReuseBuffers);
+	int ret = camera_->queueRequest(request);
+	if (ret < 0) {
+		// While stop() runs the camera refuses requests (EACCES): the queue is halted and
+		// ignores this.
+		char why[200];
+		std::snprintf(why, sizeof(why), "camera '%s' %s", id_,
+			      ret == -ENODEV ? "was disconnected" : "refused a capture request");
+		queue_.lost(ret == -ENODEV ? ErrorCode::CameraLost : ErrorCode::CameraError, why);
+	}
+}
+
+void LibcameraSource::onRequestCompleted(libcamera::Request *request)
+{
+	const int slot = static_cast<int>(request->cookie());
+	int requeueSlot = -1;
+	bool good = false;
+	if (request->status() == libcamera::Request::RequestCancelled) {
+		requeueSlot = queue_.cancelled(slot);
+	} else {
+		const libcamera::FrameBuffer *buffer = request->findBuffer(stream_);
+		const libcamera::FrameMetadata &md = buffer->metadata();
+		if (md.status == libcamera::FrameMetadata::FrameSuccess) {
+			good = true;
+			requeueSlot = queue_.completed(slot, md.sequence,
+						       static_cast<int64_t>(md.timestamp));
+		} else if (md.status == libcamera::FrameMetadata::FrameError) {
+			requeueSlot = queue_.failed(slot, md.sequence);
+		} else {
+			requeueSlot = queue_.cancelled(slot);
+		}
+	}
+
+	if (good) {
+		failuresInARow_ = 0;
+	} else if (requeueSlot >= 0 && ++failuresInARow_ >= kMaxFailuresInARow) {
+		char why[200];
+		std::snprintf(why, sizeof(why), "camera '%s' failed %d frames in a row", id_,
+			      kMaxFailuresInARow);
+		queue_.lost(ErrorCode::CameraLost, why);
+		return;
+	}
+	if (requeueSlot >= 0)
+		requeue(requeueSlot);
+}
+
+void LibcameraSource::onDisconnected()
+{
+	disconnected_ = true;
+	char why[200];
+	std::snprintf(why, sizeof(why), "camera '%s' was disconnected", id_);
+	queue_.lost(ErrorCode::CameraLost, why);
+}
+
+void LibcameraSource::stop()
+{
+	if (!streaming_)
+		return;
+	// From here completions are ignored: camera_->stop() cancels every queued request and
+	// returns once they have all completed (on libcamera's thread).
+	queue_.halt();
+	camera_->stop();
+	streaming_ = false;
+}
+
+LibcameraSource::~LibcameraSource()
+{
+	stop();
+	if (connected_) {
+		camera_->requestCompleted.disconnect(this);
+		camera_->disconnected.disconnect(this);
+	}
+	requests_.clear();
+	mappings_.clear();
+	views_.clear();
+	if (allocator_ && stream_)
+		allocator_->free(stream_);
+	allocator_.reset();
+	if (acquired_)
+		camera_->release();
+	config_.reset();
+	camera_.reset();
+	manager_.reset();
+}
+
+} // namespace
+
+Status openLibcameraSource(const LibcameraOptions &options, std::unique_ptr<FrameSource> &out)
+{
+	std::unique_ptr<LibcameraSource> source(new LibcameraSource());
+	Status st = source->open(options);
+	if (!st.ok())
+		return st;
+	out = std::move(source);
+	return Status::success();
+}
+
+} // namespace ports
+} // namespace calped
