@@ -218,8 +218,9 @@ TEST(LibcameraFrameQueue, TwoThreadsEveryFrameAccountedFor)
 				ASSERT_NE(s, t.slot) << "lent slot is also queued at the camera";
 			}
 		}
-		if (!first)
+		if (!first) {
 			EXPECT_GT(t.sequence, lastSequence); // newest first, never backwards
+		}
 		first = false;
 		lastSequence = t.sequence;
 		lentBefore = t.slot;
