@@ -56,6 +56,16 @@ public:
 
 	// Human-readable identity, e.g. "file:data/pets/frames (795 frames)".
 	virtual const char *name() const = 0;
+
+	// The largest frame the source will lend, when it knows before streaming (a file
+	// sequence, a camera whose region is set); false when only the first frame will tell.
+	// Lets the consumer size its buffers (Detector::create) before the first frame.
+	virtual bool frameSize(int &width, int &height) const
+	{
+		(void)width;
+		(void)height;
+		return false;
+	}
 };
 
 } // namespace ports

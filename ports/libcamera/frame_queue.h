@@ -25,7 +25,7 @@
 
 #include <calped/status.h>
 
-#include "common/frame_source.h"
+#include "frame_source.h"
 
 namespace calped {
 namespace ports {

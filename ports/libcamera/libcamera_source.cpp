@@ -141,6 +141,12 @@ public:
 	void stop() override;
 	SourceStats stats() const override { return queue_.stats(); }
 	const char *name() const override { return name_; }
+	bool frameSize(int &width, int &height) const override
+	{
+		width = views_.empty() ? 0 : views_[0].width;
+		height = views_.empty() ? 0 : views_[0].height;
+		return !views_.empty();
+	}
 
 private:
 	Status configure(const LibcameraOptions &options);

@@ -11,7 +11,7 @@
 #include <calped/image.h>
 #include <calped/status.h>
 
-#include "common/frame_source.h"
+#include "frame_source.h"
 
 namespace calped {
 namespace ports {

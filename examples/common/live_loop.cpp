@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: BSD-2-Clause
+#include "live_loop.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <calped/calped.h>
+
+#include "cli_error.h"
+#include "file_io.h"
+#include "json_line.h"
+#include "overlay_writer.h"
+
+namespace calped {
+namespace live {
+
+namespace {
+
+std::atomic<bool> gStop{ false };
+
+void onStopSignal(int)
+{
+	gStop.store(true);
+}
+
+void installStopHandlers()
+{
+	struct sigaction sa;
+	std::memset(&sa, 0, sizeof(sa));
+	sa.sa_handler = onStopSignal;
+	sigemptyset(&sa.sa_mask);
+	sigaction(SIGINT, &sa, nullptr);
+	sigaction(SIGTERM, &sa, nullptr);
+	// A closed stdout pipe becomes a write error, not a silent death.
+	std::signal(SIGPIPE, SIG_IGN);
+}
+
+// Model, calibration and detector, set up before (or, when the source cannot tell its
+// frame size, at) the first frame.
+struct DetectorSetup {
+	Model model;
+	CameraModel camera;
+	bool hasCamera = false;
+	std::unique_ptr<Detector> detector;
+};
+
+bool loadInputs(const LiveOptions &options, DetectorSetup &setup, std::string &error)
+{
+	std::vector<uint8_t> blob;
+	if (!detect_tool::readFile(options.model, blob, error, "model "))
+		return false;
+	Status st = loadModel(blob.data(), blob.size(), setup.model);
+	if (!st.ok()) {
+		error = "model " + options.model + ": " + st.message();
+		return false;
+	}
+	if (!options.calibPath.empty()) {
+		std::vector<uint8_t> text;
+		if (!detect_tool::readFile(options.calibPath, text, error, "calibration "))
+			return false;
+		st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
+				     options.calibPath.c_str(), setup.camera);
+		if (!st.ok()) {
+			error = std::string("calibration: ") + st.message();
+			return false;
+		}
+		setup.hasCamera = true;
+	}
+	return true;
+}
+
+bool createDetector(const LiveOptions &options, int width, int height, DetectorSetup &setup,
+		    std::string &error)
+{
+	DetectorConfig config;
+	config.maxWidth = width;
+	config.maxHeight = height;
+	config.resize = options.resize;
+	config.camera = setup.hasCamera ? &setup.camera : nullptr;
+	config.method = options.calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;
+	config.minPersonHeight = options.minHeight;
+	config.maxPersonHeight = options.maxHeight;
+	const Status st = Detector::create(setup.model, config, setup.detector);
+	if (!st.ok()) {
+		error = "cannot set up the detector for " + std::to_string(width) + "x" +
+			std::to_string(height) + " frames: " + st.message();
+		return false;
+	}
+	return true;
+}
+
+class StatsLine
+{
+public:
+	explicit StatsLine(const char *program) : program_(program), last_(Clock::now()) {}
+
+	bool due(double every) const
+	{
+		return std::chrono::duration<double>(Clock::now() - last_).count() >= every;
+	}
+
+	void print(const ports::SourceStats &s, uint64_t processed, const StatsReporter *extra)
+	{
+		const auto now = Clock::now();
+		const double seconds = std::chrono::duration<double>(now - last_).count();
+		const double fps = seconds > 0 ? (processed - lastProcessed_) / seconds : 0;
+		char line[512];
+		std::snprintf(line, sizeof(line),
+			      "%s: %.1f fps, processed %llu, delivered %llu, dropped %llu, incomplete %llu, "
+			      "timeouts %llu, restarts %llu",
+			      program_, fps, static_cast<unsigned long long>(processed),
+			      static_cast<unsigned long long>(s.delivered),
+			      static_cast<unsigned long long>(s.dropped),
+			      static_cast<unsigned long long>(s.incomplete),
+			      static_cast<unsigned long long>(s.timeouts),
+			      static_cast<unsigned long long>(s.restarts));
+		if (extra) {
+			const size_t used = std::strlen(line);
+			extra->appendStats(line + used, sizeof(line) - used);
+		}
+		std::fprintf(stderr, "%s\n", line);
+		last_ = now;
+		lastProcessed_ = processed;
+	}
+
+private:
+	using Clock = std::chrono::steady_clock;
+	const char *program_;
+	Clock::time_point last_;
+	uint64_t lastProcessed_ = 0;
+};
+
+} // namespace
+
+bool stopRequested()
+{
+	return gStop.load();
+}
+
+int runLive(ports::FrameSource &source, const LiveOptions &options, const char *program,
+	    const StatsReporter *extra)
+{
+	std::string error;
+	DetectorSetup setup;
+	if (!loadInputs(options, setup, error))
+		return cliFail(program, kExitRuntime, error);
+	int width = 0, height = 0;
+	if (source.frameSize(width, height) && !createDetector(options, width, height, setup, error))
+		return cliFail(program, kExitRuntime, error);
+	OverlayWriter overlay;
+	if (!options.overlayDir.empty() && !overlay.open(options.overlayDir, error))
+		return cliFail(program, kExitRuntime, error);
+
+	installStopHandlers();
+	Status st = source.start();
+	if (!st.ok())
+		return cliFail(program, kExitRuntime, std::string(source.name()) + ": " + st.message());
+	if (!options.quiet)
+		std::fprintf(stderr, "%s: streaming from %s\n", program, source.name());
+
+	StatsLine statsLine(program);
+	uint64_t processed = 0;
+	bool overlayWarned = false;
+	int exitCode = 0;
+	while (!stopRequested()) {
+		if (!options.quiet && statsLine.due(options.statsEvery))
+			statsLine.print(source.stats(), processed, extra);
+
+		ports::Frame frame;
+		st = source.next(frame, options.timeoutMs);
+		if (st.code() == ErrorCode::Timeout)
+			continue; // counted by the source; a stop signal is seen on the next turn
+		if (st.code() == ErrorCode::EndOfStream)
+			break;
+		if (!st.ok()) {
+			exitCode = cliFail(program, kExitRuntime, std::string(source.name()) + ": " + st.message());
+			break;
+		}
+		if (!setup.detector &&
+		    !createDetector(options, frame.image.width, frame.image.height, setup, error)) {
+			exitCode = cliFail(program, kExitRuntime, error);
+			break;
+		}
+
+		Detections dets;
+		st = setup.detector->detect(frame.image, dets);
+		if (st.code() == ErrorCode::ImageTooSmall) {
+			dets = Detections(); // no window fits: no pedestrians, not a failure
+		} else if (!st.ok()) {
+			exitCode = cliFail(program, kExitRuntime,
+					   "frame " + std::to_string(frame.id) + ": " + st.message());
+			break;
+		}
+		writeJsonLine(stdout, frame, st.ok() ? setup.detector->lastStats().msTotal : 0.0, dets);
+		if (!options.overlayDir.empty() && processed % options.overlayEvery == 0 &&
+		    !overlay.write(frame, dets, error)) {
+			if (error.compare(0, 8, "overlays") != 0) {
+				exitCode = cliFail(program, kExitRuntime, error);
+				break;
+			}
+			if (!overlayWarned)
+				std::fprintf(stderr, "%s: warning: %s\n", program, error.c_str());
+			overlayWarned = true;
+		}
+		source.release();
+		processed++;
+		if (options.frames > 0 && processed >= static_cast<uint64_t>(options.frames))
+			break;
+	}
+	source.stop();
+	if (std::fflush(stdout) != 0 || std::ferror(stdout))
+		exitCode = cliFail(program, kExitRuntime, "cannot write standard output");
+	if (!options.quiet)
+		statsLine.print(source.stats(), processed, extra);
+	return exitCode;
+}
+
+} // namespace live
+} // namespace calped

@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: BSD-2-Clause
+#include "video_pipe.h"
+
+#include <cctype>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
+
+namespace calped {
+namespace ports {
+
+namespace {
+
+struct Child {
+	pid_t pid = -1;
+	int out = -1;
+	int err = -1;
+};
+
+// Runs argv[0] from PATH with stdout and stderr on pipes. errno-style code on failure.
+int spawnWithPipes(const char *const argv[], Child &child)
+{
+	int out[2], err[2];
+	if (pipe2(out, O_CLOEXEC) != 0)
+		return errno;
+	if (pipe2(err, O_CLOEXEC) != 0) {
+		const int e = errno;
+		::close(out[0]);
+		::close(out[1]);
+		return e;
+	}
+	posix_spawn_file_actions_t actions;
+	posix_spawn_file_actions_init(&actions);
+	posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+	posix_spawn_file_actions_adddup2(&actions, err[1], 2);
+	posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+	pid_t pid = -1;
+	const int rc = posix_spawnp(&pid, argv[0], &actions, nullptr,
+				    const_cast<char *const *>(argv), environ);
+	posix_spawn_file_actions_destroy(&actions);
+	::close(out[1]);
+	::close(err[1]);
+	if (rc != 0) {
+		::close(out[0]);
+		::close(err[0]);
+		return rc;
+	}
+	child.pid = pid;
+	child.out = out[0];
+	child.err = err[0];
+	return 0;
+}
+
+// Reads up to size-1 bytes of what the child wrote on stderr, as one line.
+void readMessage(int fd, char *text, size_t size)
+{
+	size_t n = 0;
+	while (n + 1 < size) {
+		const ssize_t r = ::read(fd, text + n, size - 1 - n);
+		if (r < 0 && errno == EINTR)
+			continue;
+		if (r <= 0)
+			break;
+		n += static_cast<size_t>(r);
+	}
+	while (n > 0 && std::isspace(static_cast<unsigned char>(text[n - 1])))
+		n--;
+	text[n] = '\0';
+	for (size_t i = 0; i < n; i++)
+		if (text[i] == '\n' || text[i] == '\r')
+			text[i] = ' ';
+}
+
+int reap(pid_t pid)
+{
+	int status = 0;
+	while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+	}
+	return status;
+}
+
+const char *missingToolHint(int error)
+{
+	return error == ENOENT ? " (not found on PATH; install ffmpeg)" : "";
+}
+
+} // namespace
+
+bool isVideoFileName(const std::string &path)
+{
+	const size_t dot = path.rfind('.');
+	if (dot == std::string::npos)
+		return false;
+	std::string ext = path.substr(dot + 1);
+	for (char &c : ext)
+		c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+	for (const char *v : { "avi", "mp4", "mkv", "mov", "webm", "mpg", "mpeg", "m4v", "y4m" })
+		if (ext == v)
+			return true;
+	return false;
+}
+
+Status probeVideo(const std::string &path, int &width, int &height)
+{
+	if (access(path.c_str(), R_OK) != 0)
+		return Status::error(ErrorCode::IoError, "cannot read %s: %s", path.c_str(),
+				     std::strerror(errno));
+	const char *argv[] = { "ffprobe", "-v", "error", "-select_streams", "v:0", "-show_entries",
+			       "stream=width,height", "-of", "csv=p=0:s=x", path.c_str(), nullptr };
+	Child child;
+	const int rc = spawnWithPipes(argv, child);
+	if (rc != 0)
+		return Status::error(ErrorCode::IoError, "cannot run ffprobe for %s: %s%s",
+				     path.c_str(), std::strerror(rc), missingToolHint(rc));
+	char out[128], err[200];
+	readMessage(child.out, out, sizeof(out));
+	readMessage(child.err, err, sizeof(err));
+	::close(child.out);
+	::close(child.err);
+	const int status = reap(child.pid);
+	int w = 0, h = 0;
+	char tail = 0;
+	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
+	    std::sscanf(out, "%dx%d%c", &w, &h, &tail) != 2 || w <= 0 || h <= 0)
+		return Status::error(ErrorCode::IoError, "cannot decode %s as video: %s", path.c_str(),
+				     err[0] ? err : "no video stream");
+	width = w;
+	height = h;
+	return Status::success();
+}
+
+Status VideoPipe::open(const std::string &path, int width, int height)
+{
+	close();
+	path_ = path;
+	frameBytes_ = static_cast<size_t>(width) * height * 3;
+	char size[32];
+	std::snprintf(size, sizeof(size), "%dx%d", width, height);
+	// -s pins the output size: a stream that changes size mid-file is scaled, never
+	// allowed to overrun the fixed buffer.
+	const char *argv[] = { "ffmpeg", "-nostdin", "-loglevel", "error", "-i", path.c_str(), "-f",
+			       "rawvideo", "-pix_fmt", "rgb24", "-s", size, "-", nullptr };
+	Child child;
+	const int rc = spawnWithPipes(argv, child);
+	if (rc != 0)
+		return Status::error(ErrorCode::IoError, "cannot run ffmpeg for %s: %s%s", path.c_str(),
+				     std::strerror(rc), missingToolHint(rc));
+	pid_ = child.pid;
+	dataFd_ = child.out;
+	errorFd_ = child.err;
+	return Status::success();
+}
+
+Status VideoPipe::read(uint8_t *pixels)
+{
+	if (dataFd_ < 0)
+		return Status::error(ErrorCode::EndOfStream, "%s: no more frames", path_.c_str());
+	size_t got = 0;
+	while (got < frameBytes_) {
+		const ssize_t r = ::read(dataFd_, pixels + got, frameBytes_ - got);
+		if (r < 0 && errno == EINTR)
+			continue;
+		if (r < 0)
+			return Status::error(ErrorCode::IoError, "reading frames of %s from ffmpeg: %s",
+					     path_.c_str(), std::strerror(errno));
+		if (r == 0)
+			break;
+		got += static_cast<size_t>(r);
+	}
+	if (got == frameBytes_)
+		return Status::success();
+	const Status end = finish();
+	if (!end.ok())
+		return end;
+	if (got != 0)
+		return Status::error(ErrorCode::IoError, "%s: ffmpeg ended inside a frame (%zu of %zu bytes)",
+				     path_.c_str(), got, frameBytes_);
+	return Status::error(ErrorCode::EndOfStream, "%s: no more frames", path_.c_str());
+}
+
+Status VideoPipe::finish()
+{
+	char err[200];
+	readMessage(errorFd_, err, sizeof(err));
+	::close(dataFd_);
+	::close(errorFd_);
+	dataFd_ = errorFd_ = -1;
+	const int status = reap(pid_);
+	pid_ = -1;
+	if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
+		return Status::success();
+	return Status::error(ErrorCode::IoError, "ffmpeg failed on %s: %s", path_.c_str(),
+			     err[0] ? err : "no message");
+}
+
+void VideoPipe::close()
+{
+	if (pid_ > 0)
+		kill(pid_, SIGTERM);
+	if (dataFd_ >= 0)
+		::close(dataFd_);
+	if (errorFd_ >= 0)
+		::close(errorFd_);
+	if (pid_ > 0)
+		reap(pid_);
+	pid_ = -1;
+	dataFd_ = errorFd_ = -1;
+}
+
+} // namespace ports
+} // namespace calped
