@@ -18,6 +18,7 @@ packages=(
 	ffmpeg
 	gnuplot-nox
 	valgrind
+	libcamera-dev
 )
 
 missing=()

@@ -225,7 +225,9 @@ Status LibcameraSource::configure(const LibcameraOptions &options)
 				     "libcamera has no pixel format for calped's %s",
 				     pixelFormatName(options.format));
 
-	config_ = camera_->generateConfiguration({ roleFor(options.format) });
+	// A named vector: libcamera 0.0.3 takes StreamRoles, later versions a Span of roles.
+	const libcamera::StreamRoles roles = { roleFor(options.format) };
+	config_ = camera_->generateConfiguration(roles);
 	if (!config_ || config_->empty())
 		return Status::error(ErrorCode::CameraError,
 				     "camera '%s' has no stream configuration for %s", id_,
