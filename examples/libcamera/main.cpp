@@ -31,6 +31,8 @@ void printUsage()
 		   "  --size WxH          frame size (default: the camera's); the camera may adjust it\n"
 		   "  --fps F             frame rate through FrameDurationLimits (default: the camera's)\n"
 		   "  --buffers N         buffer pool size, 2..16 (default 4)\n"
+		   "  --lost-after MS     no complete frame for MS: camera lost, exit 1\n"
+		   "                      (default 10000; 0: wait forever)\n"
 		   "\n",
 		   stdout);
 	std::fputs(calped::live::liveUsageText(), stdout);
@@ -113,6 +115,13 @@ int run(int argc, char **argv)
 					       "--buffers must be a whole number from 2 to 16, got '" +
 						       arg.value + "'");
 			camera.buffers = static_cast<int>(n);
+		} else if (arg.name == "--lost-after") {
+			long ms = 0;
+			if (!live::parseWhole(arg.value, ms) || ms < 0 || ms > 3600000)
+				return cliFail(kProgram, kExitUsage,
+					       "--lost-after must be a whole number of ms from 0 to 3600000, got '" +
+						       arg.value + "'");
+			camera.lostAfterMs = static_cast<int>(ms);
 		} else {
 			return cliFail(kProgram, kExitUsage, "unknown option '" + arg.name + "' (try --help)");
 		}

@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -173,6 +174,8 @@ private:
 
 	FrameQueue queue_;
 	bool streaming_ = false;
+	int lostAfterMs_ = 0;
+	std::chrono::steady_clock::time_point lastFrame_;
 	std::atomic<bool> disconnected_{ false };
 	std::atomic<int> failuresInARow_{ 0 };
 	char id_[128] = "";
@@ -188,6 +191,11 @@ Status LibcameraSource::open(const LibcameraOptions &options)
 		return Status::error(ErrorCode::InvalidArgument,
 				     "libcamera frame size %dx%d: give both width and height, or neither",
 				     options.width, options.height);
+	if (options.lostAfterMs < 0)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "libcamera lost-after time must be >= 0 ms, got %d",
+				     options.lostAfterMs);
+	lostAfterMs_ = options.lostAfterMs;
 	if (!(options.fps >= 0 && options.fps <= 1000))
 		return Status::error(ErrorCode::InvalidArgument,
 				     "libcamera frame rate must be 0 (camera default) to 1000, got %g",
@@ -370,6 +378,7 @@ Status LibcameraSource::start()
 		return Status::error(ret == -ENODEV ? ErrorCode::CameraLost : ErrorCode::CameraError,
 				     "camera '%s' failed to start: %s", id_, std::strerror(-ret));
 	streaming_ = true;
+	lastFrame_ = std::chrono::steady_clock::now();
 	for (auto &request : requests_) {
 		request->reuse(libcamera::Request::ReuseBuffers);
 		ret = camera_->queueRequest(request.get());
@@ -398,10 +407,19 @@ Status LibcameraSource::next(Frame &frame, int timeoutMs)
 		frame.image = views_[taken.slot];
 		frame.id = taken.sequence;
 		frame.timestampNs = taken.timestampNs;
+		lastFrame_ = std::chrono::steady_clock::now();
 		return Status::success();
-	case FrameQueue::Wait::Timeout:
+	case FrameQueue::Wait::Timeout: {
+		const long long silentMs = std::chrono::duration_cast<std::chrono::milliseconds>(
+						   std::chrono::steady_clock::now() - lastFrame_)
+						   .count();
+		if (lostAfterMs_ > 0 && silentMs >= lostAfterMs_)
+			return Status::error(ErrorCode::CameraLost,
+					     "camera '%s' sent no complete frame for %lld ms (limit %d ms)",
+					     id_, silentMs, lostAfterMs_);
 		return Status::error(ErrorCode::Timeout, "camera '%s' sent no frame in %d ms", id_,
 				     timeoutMs);
+	}
 	case FrameQueue::Wait::Lost:
 		return queue_.lostStatus();
 	case FrameQueue::Wait::Halted:

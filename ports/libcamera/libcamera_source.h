@@ -33,6 +33,9 @@ struct LibcameraOptions {
 	// Buffers in the pool (2..16): one lent to the detector, one waiting, the rest queued
 	// at the camera. The camera may ask for more.
 	int buffers = 4;
+	// No complete frame for this long while streaming: next() returns CameraLost (a
+	// stalled sensor or pipeline that libcamera does not report). 0: never.
+	int lostAfterMs = 10000;
 	// Keeps libcamera's own log to errors (LIBCAMERA_LOG_LEVELS=*:ERROR) unless the user
 	// set LIBCAMERA_LOG_LEVELS.
 	bool quietLibcameraLog = true;

@@ -74,6 +74,7 @@ TEST(LibcameraCli, UsageErrorsExitTwo)
 		{ "--model", "m.cpm", "--size", "0x480" },
 		{ "--model", "m.cpm", "--fps", "0" },
 		{ "--model", "m.cpm", "--buffers", "1" },
+		{ "--model", "m.cpm", "--lost-after", "-1" },
 		{ "--model", "m.cpm", "--frobnicate", "1" },
 	};
 	for (const auto &args : bad) {
@@ -87,7 +88,8 @@ TEST(LibcameraCli, HelpListsTheCameraOptions)
 	ProcessResult r = runProcess(program(), { "--help" }, scratchDir());
 	ASSERT_TRUE(r.exited);
 	EXPECT_EQ(r.exitCode, 0);
-	for (const char *option : { "--camera", "--format", "--size", "--fps", "--frames", "--model" })
+	for (const char *option : { "--camera", "--format", "--size", "--fps", "--lost-after", "--frames",
+				    "--model" })
 		EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 

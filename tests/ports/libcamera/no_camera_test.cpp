@@ -78,6 +78,10 @@ TEST(LibcameraNoCamera, OptionsAreCheckedBeforeLookingForACamera)
 	size.width = 640;
 	EXPECT_EQ(openLibcameraSource(size, source).code(), ErrorCode::InvalidArgument);
 
+	LibcameraOptions lost;
+	lost.lostAfterMs = -1;
+	EXPECT_EQ(openLibcameraSource(lost, source).code(), ErrorCode::InvalidArgument);
+
 	LibcameraOptions rate;
 	rate.fps = -5;
 	EXPECT_EQ(openLibcameraSource(rate, source).code(), ErrorCode::InvalidArgument);
