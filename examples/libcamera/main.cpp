@@ -5,6 +5,7 @@
 #include <exception>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,9 @@ void printUsage()
 		   "camera options:\n"
 		   "  --camera ID|INDEX   camera id as `cam --list` prints it, or its index there\n"
 		   "                      (default: the first camera)\n"
-		   "  --format F          nv12 (default), yuv420, yuyv, rgb888 (B,G,R bytes) or\n"
-		   "                      bgr888 (R,G,B bytes), as libcamera names them\n"
+		   "  --format F          nv12, yuv420, yuyv, rgb888 (B,G,R bytes) or bgr888\n"
+		   "                      (R,G,B bytes), as libcamera names them (default: the\n"
+		   "                      first of these the camera offers)\n"
 		   "  --size WxH          frame size (default: the camera's); the camera may adjust it\n"
 		   "  --fps F             frame rate through FrameDurationLimits (default: the camera's)\n"
 		   "  --buffers N         buffer pool size, 2..16 (default 4)\n"
@@ -41,7 +43,7 @@ void printUsage()
 		   stdout);
 }
 
-bool parseFormat(const std::string &text, calped::PixelFormat &out)
+bool parseFormat(const std::string &text, std::optional<calped::PixelFormat> &out)
 {
 	using calped::PixelFormat;
 	struct Name {

@@ -225,22 +225,57 @@ Status LibcameraSource::open(const LibcameraOptions &options)
 	return Status::success();
 }
 
+// "NV12, YUYV, MJPEG": what a stream configuration offers, for error messages.
+std::string offeredFormats(const libcamera::StreamConfiguration &cfg)
+{
+	std::string offered;
+	for (const libcamera::PixelFormat &f : cfg.formats().pixelformats())
+		offered += (offered.empty() ? "" : ", ") + f.toString();
+	return offered.empty() ? "nothing" : offered;
+}
+
+// Without a requested format: the first of these the camera offers.
+const PixelFormat kPreferredFormats[] = { PixelFormat::NV12, PixelFormat::YUV420,
+					  PixelFormat::YUYV, PixelFormat::BGR8,
+					  PixelFormat::RGB8, PixelFormat::Gray8 };
+
 Status LibcameraSource::configure(const LibcameraOptions &options)
 {
 	libcamera::PixelFormat wanted;
-	if (!libcameraFormatFor(options.format, wanted))
+	if (options.format && !libcameraFormatFor(*options.format, wanted))
 		return Status::error(ErrorCode::InvalidArgument,
 				     "libcamera has no pixel format for calped's %s",
-				     pixelFormatName(options.format));
+				     pixelFormatName(*options.format));
 
 	// A named vector: libcamera 0.0.3 takes StreamRoles, later versions a Span of roles.
-	const libcamera::StreamRoles roles = { roleFor(options.format) };
+	const libcamera::StreamRoles roles = {
+		roleFor(options.format.value_or(PixelFormat::NV12))
+	};
 	config_ = camera_->generateConfiguration(roles);
 	if (!config_ || config_->empty())
 		return Status::error(ErrorCode::CameraError,
 				     "camera '%s' has no stream configuration for %s", id_,
-				     pixelFormatName(options.format));
+				     options.format ? pixelFormatName(*options.format) : "video");
 	libcamera::StreamConfiguration &cfg = config_->at(0);
+	if (!options.format) {
+		const std::vector<libcamera::PixelFormat> offered = cfg.formats().pixelformats();
+		for (PixelFormat f : kPreferredFormats) {
+			libcamera::PixelFormat candidate;
+			libcameraFormatFor(f, candidate);
+			bool found = false;
+			for (const libcamera::PixelFormat &o : offered)
+				found = found || o == candidate;
+			if (found) {
+				wanted = candidate;
+				break;
+			}
+		}
+		if (!wanted.isValid())
+			return Status::error(ErrorCode::CameraError,
+					     "camera '%s' offers none of the formats calped reads (it "
+					     "offers %s)",
+					     id_, offeredFormats(cfg).c_str());
+	}
 	cfg.pixelFormat = wanted;
 	if (options.width > 0)
 		cfg.size = libcamera::Size(options.width, options.height);
@@ -250,14 +285,10 @@ Status LibcameraSource::configure(const LibcameraOptions &options)
 		return Status::error(ErrorCode::CameraError,
 				     "camera '%s' rejects the configuration %s", id_,
 				     cfg.toString().c_str());
-	if (cfg.pixelFormat != wanted) {
-		std::string offered;
-		for (const libcamera::PixelFormat &f : cfg.formats().pixelformats())
-			offered += (offered.empty() ? "" : ", ") + f.toString();
+	if (cfg.pixelFormat != wanted)
 		return Status::error(ErrorCode::CameraError,
 				     "camera '%s' cannot deliver %s; it offers %s", id_,
-				     wanted.toString().c_str(), offered.empty() ? "nothing" : offered.c_str());
-	}
+				     wanted.toString().c_str(), offeredFormats(cfg).c_str());
 	int ret = camera_->configure(config_.get());
 	if (ret < 0)
 		return Status::error(ErrorCode::CameraError, "camera '%s' refused %s: %s", id_,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <calped/image.h>
@@ -21,8 +22,9 @@ struct LibcameraOptions {
 	// Empty: the first camera.
 	std::string camera;
 	// NV12, YUV420, YUYV, BGR8 (libcamera "RGB888"), RGB8 ("BGR888"), Gray8 ("R8") or a
-	// Bayer format (raw streams).
-	PixelFormat format = PixelFormat::NV12;
+	// Bayer format (raw streams). Unset: the first of NV12, YUV420, YUYV, BGR8, RGB8, Gray8
+	// that the camera offers.
+	std::optional<PixelFormat> format;
 	// Frame size; 0 x 0 keeps the camera's default for the stream. The camera may adjust
 	// it to the nearest size it supports (name() then shows both).
 	int width = 0;
