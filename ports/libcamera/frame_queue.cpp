@@ -7,9 +7,12 @@
 namespace calped {
 namespace ports {
 
-void FrameQueue::begin()
+void FrameQueue::begin(const char *label, int failureLimit)
 {
 	std::lock_guard<std::mutex> lock(mutex_);
+	std::snprintf(label_, sizeof(label_), "%s", label);
+	failureLimit_ = failureLimit;
+	failuresInARow_ = 0;
 	streaming_ = true;
 	halted_ = false;
 	lost_ = false;
@@ -48,6 +51,17 @@ void FrameQueue::noteSequence(uint32_t sequence)
 	lastSequence_ = sequence;
 }
 
+bool FrameQueue::noteFailure()
+{
+	++stats_.incomplete;
+	if (failureLimit_ <= 0 || ++failuresInARow_ < failureLimit_)
+		return true;
+	char why[sizeof(label_) + 48];
+	std::snprintf(why, sizeof(why), "%s failed %d frames in a row", label_, failuresInARow_);
+	loseLocked(ErrorCode::CameraLost, why);
+	return false;
+}
+
 int FrameQueue::completed(int slot, uint32_t sequence, int64_t timestampNs)
 {
 	int requeue = -1;
@@ -55,6 +69,7 @@ int FrameQueue::completed(int slot, uint32_t sequence, int64_t timestampNs)
 		std::lock_guard<std::mutex> lock(mutex_);
 		if (!streaming_)
 			return -1;
+		failuresInARow_ = 0;
 		noteSequence(sequence);
 		if (waiting_.slot >= 0) {
 			++stats_.dropped;
@@ -68,33 +83,48 @@ int FrameQueue::completed(int slot, uint32_t sequence, int64_t timestampNs)
 
 int FrameQueue::failed(int slot, uint32_t sequence)
 {
-	std::lock_guard<std::mutex> lock(mutex_);
-	if (!streaming_)
-		return -1;
-	noteSequence(sequence);
-	++stats_.incomplete;
-	return slot;
+	bool keepGoing;
+	{
+		std::lock_guard<std::mutex> lock(mutex_);
+		if (!streaming_)
+			return -1;
+		noteSequence(sequence);
+		keepGoing = noteFailure();
+	}
+	if (!keepGoing)
+		ready_.notify_all();
+	return keepGoing ? slot : -1;
 }
 
 int FrameQueue::cancelled(int slot)
 {
-	std::lock_guard<std::mutex> lock(mutex_);
-	if (!streaming_)
-		return -1;
-	++stats_.incomplete;
-	return slot;
+	bool keepGoing;
+	{
+		std::lock_guard<std::mutex> lock(mutex_);
+		if (!streaming_)
+			return -1;
+		keepGoing = noteFailure();
+	}
+	if (!keepGoing)
+		ready_.notify_all();
+	return keepGoing ? slot : -1;
+}
+
+void FrameQueue::loseLocked(ErrorCode code, const char *why)
+{
+	if (!lost_) {
+		lost_ = true;
+		lostCode_ = code;
+		std::snprintf(lostWhy_, sizeof(lostWhy_), "%s", why);
+	}
+	streaming_ = false;
 }
 
 void FrameQueue::lost(ErrorCode code, const char *why)
 {
 	{
 		std::lock_guard<std::mutex> lock(mutex_);
-		if (!lost_) {
-			lost_ = true;
-			lostCode_ = code;
-			std::snprintf(lostWhy_, sizeof(lostWhy_), "%s", why);
-		}
-		streaming_ = false;
+		loseLocked(code, why);
 	}
 	ready_.notify_all();
 }

@@ -10,6 +10,8 @@
 //                    camera keeps N-2 buffers to fill.
 //   failed/cancelled a damaged or cancelled buffer: counted as incomplete, slot returned for
 //                    requeueing (none after halt(), when the camera is being stopped).
+//                    After `failureLimit` of them in a row the camera counts as lost: a
+//                    broken pipeline would otherwise cancel and get back its requests forever.
 //   take()           waits for the waiting frame and lends it; giveBack() returns the lent
 //                    slot for requeueing.
 //
@@ -42,8 +44,9 @@ public:
 
 	FrameQueue() = default;
 
-	// Starts a streaming session: nothing waiting or lent, counters zero.
-	void begin();
+	// Starts a streaming session: nothing waiting or lent, counters zero. `label` names the
+	// camera in the failure-limit message; failureLimit 0 means no limit.
+	void begin(const char *label = "camera", int failureLimit = 0);
 	// The camera is being stopped: from now on completions are neither counted nor returned
 	// for requeueing, and take() returns Halted. Once the camera has stopped, every slot is
 	// the caller's again (the waiting and lent frames are forgotten).
@@ -67,6 +70,9 @@ public:
 
 private:
 	void noteSequence(uint32_t sequence);
+	// Counts one incomplete frame; false when that reaches the failure limit (then lost).
+	bool noteFailure();
+	void loseLocked(ErrorCode code, const char *why);
 
 	mutable std::mutex mutex_;
 	std::condition_variable ready_;
@@ -77,6 +83,9 @@ private:
 	char lostWhy_[200] = "";
 	Taken waiting_;
 	int lent_ = -1;
+	char label_[160] = "camera";
+	int failureLimit_ = 0;
+	int failuresInARow_ = 0;
 	bool haveSequence_ = false;
 	uint32_t lastSequence_ = 0;
 	SourceStats stats_;

@@ -177,7 +177,6 @@ private:
 	int lostAfterMs_ = 0;
 	std::chrono::steady_clock::time_point lastFrame_;
 	std::atomic<bool> disconnected_{ false };
-	std::atomic<int> failuresInARow_{ 0 };
 	char id_[128] = "";
 	char name_[256] = "libcamera";
 };
@@ -402,8 +401,9 @@ Status LibcameraSource::start()
 		return Status::success();
 	if (disconnected_)
 		return Status::error(ErrorCode::CameraLost, "camera '%s' was disconnected", id_);
-	queue_.begin();
-	failuresInARow_ = 0;
+	char label[160];
+	std::snprintf(label, sizeof(label), "camera '%s'", id_);
+	queue_.begin(label, kMaxFailuresInARow);
 	int ret = camera_->start(startControls_.get());
 	if (ret < 0)
 		return Status::error(ret == -ENODEV ? ErrorCode::CameraLost : ErrorCode::CameraError,
@@ -490,24 +490,13 @@ void LibcameraSource::onRequestCompleted(libcamera::Request *request)
 			? libcamera::FrameMetadata::FrameCancelled
 			: buffer->metadata().status;
 	int requeueSlot = -1;
-	const bool good = status == libcamera::FrameMetadata::FrameSuccess;
-	if (good)
+	if (status == libcamera::FrameMetadata::FrameSuccess)
 		requeueSlot = queue_.completed(slot, buffer->metadata().sequence,
 					       static_cast<int64_t>(buffer->metadata().timestamp));
 	else if (status == libcamera::FrameMetadata::FrameError)
 		requeueSlot = queue_.failed(slot, buffer->metadata().sequence);
 	else
 		requeueSlot = queue_.cancelled(slot);
-
-	if (good) {
-		failuresInARow_ = 0;
-	} else if (requeueSlot >= 0 && ++failuresInARow_ >= kMaxFailuresInARow) {
-		char why[200];
-		std::snprintf(why, sizeof(why), "camera '%s' failed %d frames in a row", id_,
-			      kMaxFailuresInARow);
-		queue_.lost(ErrorCode::CameraLost, why);
-		return;
-	}
 	if (requeueSlot >= 0)
 		requeue(requeueSlot);
 }

@@ -100,6 +100,45 @@ TEST(LibcameraFrameQueue, SequenceHolesCountAsDropped)
 	EXPECT_EQ(q.stats().dropped, 1u); // only the replaced frame
 }
 
+TEST(LibcameraFrameQueue, FailuresInARowBeyondTheLimitLoseTheCamera)
+{
+	FrameQueue q;
+	q.begin("camera 'x'", 5);
+	// A good frame resets the run.
+	for (int i = 0; i < 4; ++i)
+		EXPECT_EQ(q.failed(i % 4, 10 + i), i % 4);
+	EXPECT_EQ(q.completed(0, 14, 0), -1);
+	for (int i = 0; i < 4; ++i)
+		EXPECT_EQ(q.cancelled(1), 1);
+	FrameQueue::Taken t;
+	ASSERT_EQ(q.take(0, t), Wait::Frame);
+	// The fifth in a row: lost, and its slot stays out.
+	EXPECT_EQ(q.failed(2, 15), -1);
+	EXPECT_EQ(q.take(0, t), Wait::Lost);
+	EXPECT_STREQ(q.lostStatus().message(), "CameraLost: camera 'x' failed 5 frames in a row");
+	EXPECT_EQ(q.stats().incomplete, 9u);
+	// Without a limit, failures go on being recycled.
+	q.begin();
+	for (int i = 0; i < 1000; ++i)
+		ASSERT_EQ(q.cancelled(3), 3);
+}
+
+TEST(LibcameraFrameQueue, ReachingTheFailureLimitWakesAWaitingConsumer)
+{
+	FrameQueue q;
+	q.begin("camera 'y'", 3);
+	std::thread camera([&] {
+		std::this_thread::sleep_for(std::chrono::milliseconds(20));
+		for (int i = 0; i < 3; ++i)
+			q.cancelled(i);
+	});
+	FrameQueue::Taken t;
+	auto start = std::chrono::steady_clock::now();
+	EXPECT_EQ(q.take(10000, t), Wait::Lost);
+	EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+	camera.join();
+}
+
 TEST(LibcameraFrameQueue, LossWakesAWaitingConsumer)
 {
 	FrameQueue q;

@@ -48,7 +48,7 @@ namespace {
 TEST(LibcameraQueueAllocations, PerFrameCallsAllocateNothing)
 {
 	FrameQueue q;
-	q.begin();
+	q.begin("camera 'z'", 64);
 	FrameQueue::Taken t;
 	uint32_t sequence = 0;
 	allocations = 0;
