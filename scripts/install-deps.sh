@@ -18,6 +18,9 @@ packages=(
 	ffmpeg
 	gnuplot-nox
 	valgrind
+	libaravis-dev
+	libusb-1.0-0-dev
+	aravis-tools
 	libcamera-dev
 )
 
