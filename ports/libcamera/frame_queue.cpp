@@ -112,6 +112,9 @@ int FrameQueue::cancelled(int slot)
 
 void FrameQueue::loseLocked(ErrorCode code, const char *why)
 {
+	// While the camera stops it refuses requeued buffers; that is no loss.
+	if (halted_)
+		return;
 	if (!lost_) {
 		lost_ = true;
 		lostCode_ = code;

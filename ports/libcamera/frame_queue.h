@@ -57,7 +57,8 @@ public:
 	int failed(int slot, uint32_t sequence);
 	int cancelled(int slot);
 	// The camera disappeared or refused a buffer: take() returns Lost from now on. The first
-	// reason is kept; `why` is copied.
+	// reason is kept; `why` is copied. Ignored after halt() (a stopping camera refuses
+	// buffers).
 	void lost(ErrorCode code, const char *why);
 
 	// Consumer thread.

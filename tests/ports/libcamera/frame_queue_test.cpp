@@ -176,6 +176,8 @@ TEST(LibcameraFrameQueue, HaltIgnoresCancellationsOfStopAndWakesConsumer)
 	EXPECT_EQ(q.cancelled(2), -1);
 	EXPECT_EQ(q.cancelled(3), -1);
 	EXPECT_EQ(q.giveBack(), -1);
+	// A requeue refused by the stopping camera is no loss.
+	q.lost(ErrorCode::CameraError, "camera 'x' refused a capture request");
 	EXPECT_EQ(q.take(1000, t), Wait::Halted);
 	EXPECT_EQ(q.stats().incomplete, 0u);
 	EXPECT_EQ(q.lostStatus().code(), ErrorCode::Ok);
