@@ -21,6 +21,7 @@ packages=(
 	libaravis-dev
 	libusb-1.0-0-dev
 	aravis-tools
+	libcamera-dev
 )
 
 missing=()
