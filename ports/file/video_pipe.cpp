@@ -125,6 +125,11 @@ Status probeVideo(const std::string &path, int &width, int &height)
 	::close(child.out);
 	::close(child.err);
 	const int status = reap(child.pid);
+	// Where posix_spawnp cannot report a failed exec (qemu-user runs the child as a plain
+	// fork), the child exits 127 without a word: the program is not there.
+	if (WIFEXITED(status) && WEXITSTATUS(status) == 127 && !out[0] && !err[0])
+		return Status::error(ErrorCode::IoError, "cannot run ffprobe for %s: %s%s",
+				     path.c_str(), std::strerror(ENOENT), missingToolHint(ENOENT));
 	int w = 0, h = 0;
 	char tail = 0;
 	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
