@@ -183,14 +183,24 @@ bool pnmSafe(const uint8_t *data, size_t size, std::string &reason)
 	const char *const names[3] = { "width", "height", "maximum value" };
 	// stb's own limits: 2^24 pixels a side (STBI_MAX_DIMENSIONS), 16-bit samples.
 	const long limits[3] = { 1L << 24, 1L << 24, 65535 };
+	long values[3] = {};
 	for (int i = 0; i < 3; i++) {
 		skipPnmSpace(r, c);
-		long value;
-		if (!pnmNumber(r, c, limits[i], value)) {
+		if (!pnmNumber(r, c, limits[i], values[i])) {
 			reason = std::string("corrupt PNM header: ") + names[i] + " above " +
 				 std::to_string(limits[i]);
 			return false;
 		}
+	}
+	// stb leaves the samples of a short file uninitialised instead of failing.
+	const unsigned long long samples = static_cast<unsigned long long>(values[0]) *
+					   static_cast<unsigned long long>(values[1]) *
+					   (data[1] == '6' ? 3 : 1) * (values[2] > 255 ? 2 : 1);
+	const size_t left = r.pos < size ? size - r.pos : 0;
+	if (samples > left) {
+		reason = "truncated PNM: " + std::to_string(left) + " bytes of samples, " +
+			 std::to_string(samples) + " needed";
+		return false;
 	}
 	return true;
 }

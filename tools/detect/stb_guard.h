@@ -4,7 +4,8 @@
 // fixed the same faults upstream. Regression inputs: tests/fuzz/regressions/image/.
 //   - JPEG: a Huffman table (DHT) declaring more than 256 codes makes stb write past its
 //     code-size and value arrays.
-//   - PGM/PPM: a width, height or maximum value with enough digits overflows stb's int.
+//   - PGM/PPM: a width, height or maximum value with enough digits overflows stb's int;
+//     a file shorter than its samples decodes to uninitialised memory instead of failing.
 //   - PNG: stb allocates each IDAT chunk's declared length before reading it (a 76-byte
 //     file asked for 2 GiB); chunks longer than the rest of the file are refused.
 // (stb 2.27 also overruns converting 16-bit PNM to another channel count: image_io asks
