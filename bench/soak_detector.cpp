@@ -273,8 +273,19 @@ int main(int argc, char **argv)
 	}
 	const long rssCreated = residentBytes();
 
+	// The counter must see an allocation, or "zero per frame" would prove nothing.
+	allocations.store(0);
+	counting.store(true);
+	std::vector<int> *probe = new std::vector<int>(64);
+	counting.store(false);
+	delete probe;
+	if (allocations.load() < 2) {
+		std::fprintf(stderr, "soak_detector: the allocation counter does not work\n");
+		return 1;
+	}
+
 	std::printf("soak: %s detector, %zu frames %dx%d in memory, resize %.2f, %ld frames "
-		    "(warm-up %ld), sampling every %ld; counting %s\n",
+		    "(warm-up %ld), sampling every %ld; counting %s (self-check saw %ld)\n",
 		    opt.generic ? "generic" : "calibrated", frames.size(), frames[0].width,
 		    frames[0].height, opt.resize, opt.total, opt.warmup, opt.every,
 #ifdef CALPED_SOAK_COUNTS_MALLOC
@@ -282,7 +293,8 @@ int main(int argc, char **argv)
 #else
 		    "operator new"
 #endif
-	);
+		    ,
+		    allocations.load());
 	std::printf("RSS start %.1f MiB, frames loaded %.1f MiB, detector created %.1f MiB\n",
 		    mib(rssStart), mib(rssFrames), mib(rssCreated));
 	std::printf("%8s %10s %12s %12s %10s\n", "frame", "RSS MiB", "detections", "allocations",

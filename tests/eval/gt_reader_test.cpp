@@ -141,7 +141,7 @@ TEST(CvmlReader, MessagesStayOnePrintableLine)
 	if (!cvmlSupported())
 		GTEST_SKIP() << "built without expat";
 	const std::string text = "<dataset>\n<frame number=\"0\"><objectlist><object id=\"1\">\n"
-				 "<box h=\"&#27;[2J&#10;\" w=\"3\" xc=\"1\" yc=\"1\"/>"
+				 "<box h=\"&#127;[2J&#10;\" w=\"3\" xc=\"1\" yc=\"1\"/>"
 				 "</object></objectlist></frame></dataset>\n";
 	GroundTruth gt;
 	std::string error;

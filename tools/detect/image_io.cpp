@@ -21,10 +21,17 @@ struct StbiFree {
 	void operator()(stbi_uc *p) const { stbi_image_free(p); }
 };
 
-const char *stbReason()
+// stb's reason for the last failure, fit for a one-line message: stb may give none, an
+// empty one, or one holding the file's raw bytes ("\x17... PNG chunk not known"); all
+// three were found by fuzzing.
+std::string stbReason()
 {
 	const char *r = stbi_failure_reason();
-	return r ? r : "unknown format";
+	const std::string reason = r ? std::string(r).substr(0, 80) : std::string();
+	bool printable = !reason.empty();
+	for (char c : reason)
+		printable = printable && static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+	return printable ? reason : "corrupt or unsupported image data";
 }
 
 bool startsWith(const uint8_t *data, size_t size, const char *magic, size_t length)
@@ -114,7 +121,7 @@ bool decodeImageBytes(const uint8_t *bytes, size_t size, const std::string &path
 	if (!checkSize(w, h, maxPixels, path, error))
 		return false;
 	// The file's own channel count: stb 2.27's conversion of 16-bit PNM to another count
-	// overruns its buffer (found by tests/fuzz/fuzz_image), so channels are mapped here.
+	// overran its buffer (found by tests/fuzz/fuzz_image), so channels are mapped here.
 	std::unique_ptr<stbi_uc, StbiFree> data(
 		stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &comp, 0));
 	if (!data) {

@@ -43,7 +43,8 @@ struct Tables {
 	bool defined[2][4] = {};
 };
 
-// stb's DHT loop: tables are read while the declared length lasts.
+// stb's DHT loop: tables are read while the declared length lasts, each table's codes
+// copied before anything checks their count.
 bool checkHuffmanTables(Reader &r, Tables &tables, std::string &reason)
 {
 	long length = r.get16() - 2;
@@ -61,6 +62,10 @@ bool checkHuffmanTables(Reader &r, Tables &tables, std::string &reason)
 			tables.defined[classAndId >> 4][classAndId & 15] = true;
 		r.skip(codes);
 		length -= 17 + codes;
+	}
+	if (length != 0) {
+		reason = "corrupt JPEG: Huffman tables do not fill their segment";
+		return false;
 	}
 	return true;
 }
@@ -98,39 +103,57 @@ bool checkScanTables(Reader &r, const Tables &tables, bool progressive, std::str
 	return true;
 }
 
-// Entropy-coded data ends at the first marker other than a stuffed 0xFF00 or a restart.
+// Entropy-coded data runs to the first marker; 0xFF fill bytes may precede a stuffed 0x00
+// or a restart marker (stb's bit reader skips them the same way).
 void skipScanData(Reader &r)
 {
 	while (!r.atEnd()) {
 		if (r.get8() != 0xff)
 			continue;
-		const size_t at = r.pos;
-		const int next = r.get8();
+		const size_t markerStart = r.pos - 1;
+		int next = r.get8();
+		while (next == 0xff && !r.atEnd())
+			next = r.get8();
 		if (next == 0x00 || (next >= 0xd0 && next <= 0xd7))
 			continue;
-		r.pos = at - 1; // let nextMarker read the 0xFF again
+		r.pos = markerStart; // let nextMarker read it again
 		return;
 	}
 }
 
+// The segments are walked as a valid file lays them out; anything else (bytes between
+// segments, a segment past the end of the file, a marker 0x00) is refused as corrupt,
+// because there stb's reading and this walk could part ways. A well-formed file is read by
+// stb at a subset of the places checked here (stb stops at the first surprise).
 bool jpegSafe(const uint8_t *data, size_t size, std::string &reason)
 {
 	Reader r{ data, size, 2 };
 	Tables tables;
 	bool progressive = false;
 	while (!r.atEnd()) {
+		const size_t at = r.pos;
 		const int m = nextMarker(r);
-		if (m < 0)
-			continue; // stb skips stray bytes between segments
+		if (m < 0 || m == 0x00 || m == 0xff) {
+			reason = "corrupt JPEG: no marker at byte " + std::to_string(at);
+			return false;
+		}
 		if (m == 0xd9)
 			return true; // end of image
+		if (m == 0x01 || (m >= 0xd0 && m <= 0xd8))
+			continue; // markers without a length
+		const size_t segment = r.pos;
+		const long length = r.get16();
+		if (length < 2 || static_cast<size_t>(length) > size - segment) {
+			reason = "corrupt JPEG: a segment at byte " + std::to_string(at) +
+				 " runs past the end of the file";
+			return false;
+		}
+		r.pos = segment;
 		if (m == 0xc4) {
 			if (!checkHuffmanTables(r, tables, reason))
 				return false;
 			continue;
 		}
-		if (m == 0x01 || (m >= 0xd0 && m <= 0xd8))
-			continue; // markers without a length
 		if (m == 0xc2)
 			progressive = true;
 		if (m == 0xda) {
@@ -139,10 +162,9 @@ bool jpegSafe(const uint8_t *data, size_t size, std::string &reason)
 			skipScanData(r);
 			continue;
 		}
-		const long length = r.get16();
-		r.skip(length - 2);
+		r.skip(length);
 	}
-	return true;
+	return true; // a truncated file: stb decodes what there is
 }
 
 bool isPnmSpace(int c)
@@ -192,10 +214,17 @@ bool pnmSafe(const uint8_t *data, size_t size, std::string &reason)
 			return false;
 		}
 	}
+	// stb 2.27 keeps 16-bit samples in the host's byte order (on x86 and ARM the low byte
+	// becomes the pixel) and overran converting their channels: 8-bit files only.
+	if (values[2] > 255) {
+		reason = "16-bit PGM/PPM (maximum value " + std::to_string(values[2]) +
+			 ") is not supported, only 8-bit";
+		return false;
+	}
 	// stb leaves the samples of a short file uninitialised instead of failing.
 	const unsigned long long samples = static_cast<unsigned long long>(values[0]) *
 					   static_cast<unsigned long long>(values[1]) *
-					   (data[1] == '6' ? 3 : 1) * (values[2] > 255 ? 2 : 1);
+					   (data[1] == '6' ? 3 : 1);
 	const size_t left = r.pos < size ? size - r.pos : 0;
 	if (samples > left) {
 		reason = "truncated PNM: " + std::to_string(left) + " bytes of samples, " +

@@ -5,11 +5,13 @@
 //   - JPEG: a Huffman table (DHT) declaring more than 256 codes makes stb write past its
 //     code-size and value arrays.
 //   - PGM/PPM: a width, height or maximum value with enough digits overflows stb's int;
-//     a file shorter than its samples decodes to uninitialised memory instead of failing.
+//     a file shorter than its samples decodes to uninitialised memory instead of failing;
+//     16-bit samples come out in the host's byte order (the low byte on x86 and ARM), and
+//     converting their channels overran stb's buffer: only 8-bit PGM/PPM is accepted.
 //   - PNG: stb allocates each IDAT chunk's declared length before reading it (a 76-byte
 //     file asked for 2 GiB); chunks longer than the rest of the file are refused.
-// (stb 2.27 also overruns converting 16-bit PNM to another channel count: image_io asks
-// stb for the file's own channels and converts them itself.)
+// (image_io also asks stb for the file's own channels and expands them itself, so stb's
+// channel conversion, where the 16-bit overrun was, is never used.)
 #pragma once
 
 #include <cstddef>
