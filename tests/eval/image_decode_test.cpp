@@ -85,6 +85,7 @@ TEST(ImageDecode, FuzzFindingsAreRefusedWithAReason)
 		{ "pgm_16bit_complete.pgm", "16-bit PGM/PPM (maximum value 65535) is not supported" },
 		{ "png_idat_2gib_length.png", "corrupt PNG: a chunk declares" },
 		{ "pgm_truncated.pgm", "truncated PNM: 3 bytes of samples, 4 needed" },
+		{ "png_empty_first_idat.png", "corrupt PNG: an empty IDAT chunk before the image data" },
 	};
 	for (const auto &f : findings) {
 		const std::string path = fuzzFile(std::string("regressions/image/") + f.file);

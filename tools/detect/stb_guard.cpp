@@ -239,6 +239,7 @@ bool pnmSafe(const uint8_t *data, size_t size, std::string &reason)
 bool pngSafe(const uint8_t *data, size_t size, std::string &reason)
 {
 	size_t pos = 8;
+	bool imageData = false;
 	while (size - pos >= 8) {
 		const uint32_t length = static_cast<uint32_t>(data[pos]) << 24 |
 					static_cast<uint32_t>(data[pos + 1]) << 16 |
@@ -251,6 +252,14 @@ bool pngSafe(const uint8_t *data, size_t size, std::string &reason)
 		}
 		if (std::memcmp(data + pos + 4, "IEND", 4) == 0)
 			return true;
+		// stb copies a first, empty IDAT into its still-null buffer (memcpy(NULL, ..., 0)).
+		if (std::memcmp(data + pos + 4, "IDAT", 4) == 0) {
+			if (length == 0 && !imageData) {
+				reason = "corrupt PNG: an empty IDAT chunk before the image data";
+				return false;
+			}
+			imageData = true;
+		}
 		pos += 8 + static_cast<size_t>(length);
 		if (size - pos < 4)
 			return true; // no CRC: stb reports the truncation itself

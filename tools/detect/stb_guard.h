@@ -9,7 +9,8 @@
 //     16-bit samples come out in the host's byte order (the low byte on x86 and ARM), and
 //     converting their channels overran stb's buffer: only 8-bit PGM/PPM is accepted.
 //   - PNG: stb allocates each IDAT chunk's declared length before reading it (a 76-byte
-//     file asked for 2 GiB); chunks longer than the rest of the file are refused.
+//     file asked for 2 GiB): chunks longer than the rest of the file are refused; a first
+//     IDAT that is empty makes stb copy into a null pointer: refused.
 // (image_io also asks stb for the file's own channels and expands them itself, so stb's
 // channel conversion, where the 16-bit overrun was, is never used.)
 #pragma once
