@@ -24,7 +24,7 @@ while (($# > 0)); do
 	--runs) runs=$2; shift 2 ;;
 	--max-time) max_time=$2; shift 2 ;;
 	--junit) junit=$2; shift 2 ;;
-	-h|--help) sed -n '3,14p' "$0"; exit 0 ;;
+	-h|--help) sed -n '3,13p' "$0"; exit 0 ;;
 	[0-9]*) seconds=$1; shift ;;
 	-*) echo "fuzz: unknown option $1" >&2; exit 2 ;;
 	*) targets+=("$1"); shift ;;
