@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: BSD-2-Clause
 # Installs every Debian 12 package that building, testing and the main job need.
 # Fast when everything is already there: apt is only called for missing packages.
+#   scripts/install-deps.sh [EXTRA_PACKAGE...]   (scripts/fuzz.sh adds clang-14 and friends)
 set -euo pipefail
 
 packages=(
@@ -23,6 +24,7 @@ packages=(
 	aravis-tools
 	libcamera-dev
 )
+packages+=("$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -3,10 +3,14 @@
 # THE TEST COMMAND. Installs dependencies and the first 50 PETS frames (data/pets/frames),
 # then builds and runs the whole test suite twice:
 #   build/       release
-#   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (any report fails the test)
-# then cross-builds it for each of $CALPED_CROSS (default aarch64; empty: none) and runs it
-# under qemu-user (scripts/cross-test.sh, build-aarch64/).
-# The last line is "N passed, N failed, N skipped", counting GoogleTest cases of all runs.
+#   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer, meson's 'sanitize' setup
+#                (any report fails the test; docs/testing.md)
+# then runs every libFuzzer target for $CALPED_FUZZ_SECONDS (default 20) seconds
+# (scripts/fuzz.sh, build-fuzz/, clang-14), then cross-builds the suite for each of
+# $CALPED_CROSS (default aarch64; empty: none) and runs it under qemu-user
+# (scripts/cross-test.sh, build-aarch64/).
+# The last line is "N passed, N failed, N skipped", counting GoogleTest cases of all runs
+# and one case per fuzz target.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -39,7 +43,10 @@ run_suite() {
 	rm -f "$log"
 	# gtest leaves NAME.xml beside each test; a stale one must not stand in for a crash.
 	find "$builddir" -maxdepth 1 -name '*.xml' -delete
-	if ! meson test -C "$builddir" --print-errorlogs --num-processes "$jobs" --no-rebuild; then
+	# SUITE_TEST_ARGS: extra meson test arguments, e.g. --setup=sanitize.
+	local test_args=(${SUITE_TEST_ARGS-})
+	if ! meson test -C "$builddir" --print-errorlogs --num-processes "$jobs" --no-rebuild \
+		"${test_args[@]}"; then
 		failed_steps+=("$name tests")
 	fi
 	if [[ -f "$log" ]]; then
@@ -51,10 +58,23 @@ run_suite() {
 
 run_suite release build -Dbuildtype=release -Dtests=true
 
-export ASAN_OPTIONS=detect_leaks=1
-export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-run_suite sanitizers build-asan -Dbuildtype=debugoptimized -Db_sanitize=address,undefined \
-	-Db_lundef=false -Dtests=true
+# The 'sanitize' test setup (tests/meson.build) makes every ASan, LSan and UBSan report fatal.
+SUITE_TEST_ARGS=--setup=sanitize run_suite sanitizers build-asan -Dbuildtype=debugoptimized \
+	-Db_sanitize=address,undefined -Db_lundef=false -Dtests=true
+
+# Every fuzz target briefly, on its seeds and what earlier runs found: one junit case each.
+echo
+echo "=== fuzz: build-fuzz"
+fuzz_junit=build-fuzz/fuzz-junit.xml
+rm -f "$fuzz_junit"
+if ! bash scripts/fuzz.sh "${CALPED_FUZZ_SECONDS:-20}" --junit "$fuzz_junit"; then
+	failed_steps+=("fuzz")
+fi
+if [[ -f $fuzz_junit ]]; then
+	junits+=("$fuzz_junit")
+else
+	failed_steps+=("fuzz: no junit log")
+fi
 
 # ARM under emulation; the release tree's calped-convert prepares the model on the host.
 for target in ${CALPED_CROSS-aarch64}; do

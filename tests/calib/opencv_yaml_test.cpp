@@ -105,6 +105,12 @@ TEST(OpenCvYaml, MalformedInputs)
 		  ErrorCode::ParseError, "unknown field 'type'" },
 		{ "unclosed quote", edit(good, "CET\"", "CET"), ErrorCode::ParseError,
 		  "quoted string is not closed" },
+		// Found by fuzzing: a row count beyond int was cast before the range check (UB).
+		{ "rows beyond int", edit(good, camBlock, "camera_matrix: !!opencv-matrix\n   rows: 3.11111e10\n   cols: 3\n"),
+		  ErrorCode::ParseError, "rows '3.11111e10' is not a whole number in 1..64" },
+		// Found by fuzzing: keys quoted in messages keep no control characters.
+		{ "control characters in a key", good + "\x1b" "key\x07 x\n", ErrorCode::ParseError,
+		  "expected ':' after the key '?key?'" },
 	});
 }
 

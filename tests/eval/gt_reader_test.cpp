@@ -115,6 +115,57 @@ TEST(MotReader, MalformedFilesNameFileAndLine)
 	expectLineError("mot_negative_size.txt", 2, "not positive");
 }
 
+// Found by fuzzing (tests/fuzz/regressions/gt_*): a field quoted in a message must not carry
+// control characters from the file into the one-line error.
+bool printable(const std::string &s)
+{
+	for (char c : s)
+		if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+			return false;
+	return true;
+}
+
+TEST(MotReader, MessagesStayOnePrintableLine)
+{
+	const std::string text = "1,1,10,20,30,40\n2,1,\x1b[2J\r\x07,20,30,40\n";
+	GroundTruth gt;
+	std::string error;
+	EXPECT_FALSE(parseMotGroundTruth(text.data(), text.size(), "gt.txt", gt, error));
+	EXPECT_EQ(error.rfind("gt.txt:2: x \"", 0), 0u) << error;
+	EXPECT_TRUE(printable(error)) << error;
+	EXPECT_EQ(gt.lastFrame(), 0);
+}
+
+TEST(CvmlReader, MessagesStayOnePrintableLine)
+{
+	if (!cvmlSupported())
+		GTEST_SKIP() << "built without expat";
+	const std::string text = "<dataset>\n<frame number=\"0\"><objectlist><object id=\"1\">\n"
+				 "<box h=\"&#127;[2J&#10;\" w=\"3\" xc=\"1\" yc=\"1\"/>"
+				 "</object></objectlist></frame></dataset>\n";
+	GroundTruth gt;
+	std::string error;
+	EXPECT_FALSE(parseCvmlGroundTruth(text.data(), text.size(), "gt.xml", gt, error));
+	EXPECT_EQ(error.rfind("gt.xml:3: <box> attribute h=", 0), 0u) << error;
+	EXPECT_TRUE(printable(error)) << error;
+}
+
+// Frame numbers are stored sparsely: a file naming frame 10^15 costs one box, not a table
+// of 10^15 frames (which used to throw bad_alloc, or loop for ever counting boxes).
+TEST(MotReader, HugeFrameNumberCostsOneBox)
+{
+	const std::string text = "1000000000000000,1,10,20,30,40\n3,2,1,2,3,4,0\n";
+	GroundTruth gt;
+	std::string error;
+	ASSERT_TRUE(parseMotGroundTruth(text.data(), text.size(), "gt.txt", gt, error)) << error;
+	EXPECT_EQ(gt.lastFrame(), 1000000000000000L);
+	EXPECT_EQ(gt.count(gt.lastFrame(), false), 1);
+	EXPECT_EQ(gt.count(gt.lastFrame(), true), 1);
+	EXPECT_EQ(gt.count(2, true), 0);
+	EXPECT_EQ(gt.boxes(1000000000000000L).size(), 1u);
+	EXPECT_TRUE(gt.boxes(999).empty());
+}
+
 TEST(GroundTruth, MissingFileIsNamed)
 {
 	GroundTruth gt;

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "file_io.h"
+#include "stb_guard.h"
 
 // Debian's libstb ships the compiled implementations; elsewhere stb_impl.cpp provides them.
 #include <stb_image.h>
@@ -16,39 +17,86 @@ namespace calped::detect_tool {
 
 namespace {
 
-struct FileCloser {
-	void operator()(FILE *f) const { std::fclose(f); }
-};
-
 struct StbiFree {
 	void operator()(stbi_uc *p) const { stbi_image_free(p); }
 };
 
-const char *stbReason()
+// stb's reason for the last failure, fit for a one-line message: stb may give none, an
+// empty one, or one holding the file's raw bytes ("\x17... PNG chunk not known"); all
+// three were found by fuzzing.
+std::string stbReason()
 {
 	const char *r = stbi_failure_reason();
-	return r ? r : "unknown format";
+	const std::string reason = r ? std::string(r).substr(0, 80) : std::string();
+	bool printable = !reason.empty();
+	for (char c : reason)
+		printable = printable && static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+	return printable ? reason : "corrupt or unsupported image data";
+}
+
+bool startsWith(const uint8_t *data, size_t size, const char *magic, size_t length)
+{
+	return size >= length && std::memcmp(data, magic, length) == 0;
+}
+
+// PNG, JPEG (SOI marker) and binary PNM (P5 grey, P6 colour): the formats docs/cli.md lists.
+bool documentedFormat(const uint8_t *data, size_t size)
+{
+	return startsWith(data, size, "\x89PNG\r\n\x1a\n", 8) || startsWith(data, size, "\xff\xd8", 2) ||
+	       startsWith(data, size, "P5", 2) || startsWith(data, size, "P6", 2);
+}
+
+// What must hold before stb sees the bytes at all.
+bool checkBytes(const uint8_t *data, size_t size, const std::string &path, std::string &error)
+{
+	if (size == 0 || size > static_cast<size_t>(INT32_MAX)) {
+		error = "cannot decode " + path + (size == 0 ? ": empty file" : ": file too large");
+		return false;
+	}
+	if (!documentedFormat(data, size)) {
+		error = "cannot decode " + path + ": not a PNG, JPEG, PGM or PPM file";
+		return false;
+	}
+	std::string reason;
+	if (!safeForStb(data, size, reason)) {
+		error = "cannot decode " + path + ": " + reason;
+		return false;
+	}
+	return true;
+}
+
+bool checkSize(int width, int height, long maxPixels, const std::string &path, std::string &error)
+{
+	if (width <= 0 || height <= 0) {
+		error = "cannot decode " + path + ": empty image";
+		return false;
+	}
+	if (static_cast<long>(width) * height > maxPixels) {
+		error = "cannot decode " + path + ": " + std::to_string(width) + " x " +
+			std::to_string(height) + " pixels, the limit is " + std::to_string(maxPixels) +
+			" pixels";
+		return false;
+	}
+	return true;
 }
 
 } // namespace
 
 bool probeImage(const std::string &path, int &width, int &height, std::string &error)
 {
-	std::unique_ptr<FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
-	if (!f) {
-		error = "cannot read " + path + ": " + std::strerror(errno);
+	// The whole file: stb reads a JPEG's tables while reading its header.
+	std::vector<uint8_t> bytes;
+	if (!readFile(path, bytes, error))
 		return false;
-	}
+	if (!checkBytes(bytes.data(), bytes.size(), path, error))
+		return false;
 	int comp = 0;
-	if (!stbi_info_from_file(f.get(), &width, &height, &comp)) {
+	if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+				   &comp)) {
 		error = "cannot decode " + path + ": " + stbReason();
 		return false;
 	}
-	if (width <= 0 || height <= 0) {
-		error = "cannot decode " + path + ": empty image";
-		return false;
-	}
-	return true;
+	return checkSize(width, height, kMaxImagePixels, path, error);
 }
 
 bool decodeImage(const std::string &path, RgbImage &out, std::string &error)
@@ -56,21 +104,51 @@ bool decodeImage(const std::string &path, RgbImage &out, std::string &error)
 	std::vector<uint8_t> bytes;
 	if (!readFile(path, bytes, error))
 		return false;
-	if (bytes.empty() || bytes.size() > static_cast<size_t>(INT32_MAX)) {
-		error = "cannot decode " + path + (bytes.empty() ? ": empty file" : ": file too large");
+	return decodeImageBytes(bytes.data(), bytes.size(), path, out, error);
+}
+
+bool decodeImageBytes(const uint8_t *bytes, size_t size, const std::string &path, RgbImage &out,
+		      std::string &error, long maxPixels)
+{
+	if (!checkBytes(bytes, size, path, error))
+		return false;
+	int w = 0, h = 0, comp = 0;
+	// The header first: a few bytes may claim a huge image, and stb would allocate for it.
+	if (!stbi_info_from_memory(bytes, static_cast<int>(size), &w, &h, &comp)) {
+		error = "cannot decode " + path + ": " + stbReason();
 		return false;
 	}
-	int w = 0, h = 0, comp = 0;
-	// Asking for 3 channels makes stb expand grey (and drop alpha).
-	std::unique_ptr<stbi_uc, StbiFree> data(stbi_load_from_memory(
-		bytes.data(), static_cast<int>(bytes.size()), &w, &h, &comp, 3));
+	if (!checkSize(w, h, maxPixels, path, error))
+		return false;
+	// The file's own channel count: stb 2.27's conversion of 16-bit PNM to another count
+	// overran its buffer (found by tests/fuzz/fuzz_image), so channels are mapped here.
+	std::unique_ptr<stbi_uc, StbiFree> data(
+		stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &comp, 0));
 	if (!data) {
 		error = "cannot decode " + path + ": " + stbReason();
 		return false;
 	}
+	if (comp < 1 || comp > 4 || !checkSize(w, h, maxPixels, path, error)) {
+		if (error.empty())
+			error = "cannot decode " + path + ": " + std::to_string(comp) + " channels";
+		return false;
+	}
+	const size_t pixels = static_cast<size_t>(w) * static_cast<size_t>(h);
 	out.width = w;
 	out.height = h;
-	out.pixels.assign(data.get(), data.get() + static_cast<size_t>(w) * h * 3);
+	out.pixels.resize(pixels * 3);
+	// Grey (1), grey + alpha (2), RGB (3), RGBA (4): grey is expanded, alpha dropped.
+	const stbi_uc *in = data.get();
+	uint8_t *rgb = out.pixels.data();
+	for (size_t i = 0; i < pixels; i++, in += comp, rgb += 3) {
+		if (comp < 3) {
+			rgb[0] = rgb[1] = rgb[2] = in[0];
+		} else {
+			rgb[0] = in[0];
+			rgb[1] = in[1];
+			rgb[2] = in[2];
+		}
+	}
 	return true;
 }
 

@@ -57,7 +57,7 @@ bool numberAttribute(CvmlState &s, const XML_Char **attrs, const char *element,
 		return false;
 	}
 	if (!parseDouble(v, out)) {
-		s.fail(std::string("<") + element + "> attribute " + name + "=\"" + v +
+		s.fail(std::string("<") + element + "> attribute " + name + "=\"" + printable(v) +
 		       "\" is not a number");
 		return false;
 	}
@@ -77,7 +77,8 @@ void XMLCALL onStart(void *user, const XML_Char *name, const XML_Char **attrs)
 			return;
 		long k;
 		if (!parseLong(attribute(attrs, "number"), k) || k < 0)
-			return s.fail(std::string("<frame> number=\"") + attribute(attrs, "number") +
+			return s.fail(std::string("<frame> number=\"") +
+				      printable(attribute(attrs, "number")) +
 				      "\" is not a whole number >= 0");
 		auto seen = s.frameLines.find(k);
 		if (seen != s.frameLines.end())
@@ -140,13 +141,20 @@ bool cvmlSupported()
 
 bool readCvmlGroundTruth(const std::string &path, GroundTruth &out, std::string &error)
 {
+	out = GroundTruth();
 	std::string text;
 	if (!readTextFile(path, text, error)) {
 		error = "ground truth: " + error;
 		return false;
 	}
+	return parseCvmlGroundTruth(text.data(), text.size(), path, out, error);
+}
+
+bool parseCvmlGroundTruth(const char *data, size_t size, const std::string &path,
+			  GroundTruth &out, std::string &error)
+{
 	out = GroundTruth();
-	if (text.size() > static_cast<size_t>(INT32_MAX)) {
+	if (size > static_cast<size_t>(INT32_MAX)) {
 		error = "ground truth " + path + ": file too large";
 		return false;
 	}
@@ -160,8 +168,8 @@ bool readCvmlGroundTruth(const std::string &path, GroundTruth &out, std::string 
 	s.gt = &out;
 	XML_SetUserData(s.parser, &s);
 	XML_SetElementHandler(s.parser, onStart, onEnd);
-	const bool parsed = XML_Parse(s.parser, text.data(), static_cast<int>(text.size()),
-				      XML_TRUE) == XML_STATUS_OK;
+	const bool parsed = XML_Parse(s.parser, data, static_cast<int>(size), XML_TRUE) ==
+			    XML_STATUS_OK;
 	if (!parsed && s.error.empty())
 		s.error = lineError(path, static_cast<long>(XML_GetCurrentLineNumber(s.parser)),
 				    std::string("malformed XML: ") +
@@ -188,12 +196,18 @@ bool cvmlSupported()
 	return false;
 }
 
-bool readCvmlGroundTruth(const std::string &path, GroundTruth &out, std::string &error)
+bool parseCvmlGroundTruth(const char *, size_t, const std::string &path, GroundTruth &out,
+			  std::string &error)
 {
 	out = GroundTruth();
 	error = "ground truth " + path + " is CVML XML, but calped-eval was built without expat " +
 		"(install libexpat1-dev and reconfigure the build)";
 	return false;
+}
+
+bool readCvmlGroundTruth(const std::string &path, GroundTruth &out, std::string &error)
+{
+	return parseCvmlGroundTruth(nullptr, 0, path, out, error);
 }
 
 } // namespace calped::eval_tool

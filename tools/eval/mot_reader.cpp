@@ -11,8 +11,20 @@ namespace calped::eval_tool {
 bool readMotGroundTruth(const std::string &path, GroundTruth &out, std::string &error)
 {
 	out = GroundTruth();
+	std::string text;
+	if (!readTextFile(path, text, error)) {
+		error = "ground truth: " + error;
+		return false;
+	}
+	return parseMotGroundTruth(text.data(), text.size(), path, out, error);
+}
+
+bool parseMotGroundTruth(const char *data, size_t size, const std::string &path,
+			 GroundTruth &out, std::string &error)
+{
+	out = GroundTruth();
 	long boxes = 0;
-	const bool ok = forEachLine(path, error, [&](long lineNo, const std::string &line) {
+	const bool ok = forEachLineIn(std::string_view(data, size), [&](long lineNo, const std::string &line) {
 		if (line.find_first_not_of(" \t\r") == std::string::npos)
 			return true; // blank lines (a final newline, spacing) carry nothing
 		const std::vector<std::string> f = splitCsvLine(line);
@@ -28,20 +40,24 @@ bool readMotGroundTruth(const std::string &path, GroundTruth &out, std::string &
 		double v[10];
 		for (size_t i = 0; i < f.size(); i++) {
 			if (!parseDouble(f[i], v[i])) {
-				error = lineError(path, lineNo, std::string(kNames[i]) + " \"" + f[i] +
-									"\" is not a number");
+				error = lineError(path, lineNo,
+						  std::string(kNames[i]) + " \"" + printable(f[i]) +
+							  "\" is not a number");
 				return false;
 			}
 		}
 		long frame;
 		if (!parseLong(f[0], frame) || frame < 1) {
-			error = lineError(path, lineNo, "frame \"" + f[0] +
-								"\" is not a whole number >= 1 (MOTChallenge frames are 1-based)");
+			error = lineError(path, lineNo,
+					  "frame \"" + printable(f[0]) +
+						  "\" is not a whole number >= 1 (MOTChallenge frames are "
+						  "1-based)");
 			return false;
 		}
 		if (!(v[4] > 0 && v[5] > 0)) {
-			error = lineError(path, lineNo, "box size w=" + f[4] + " h=" + f[5] +
-								" is not positive");
+			error = lineError(path, lineNo,
+					  "box size w=" + printable(f[4]) + " h=" + printable(f[5]) +
+						  " is not positive");
 			return false;
 		}
 		GtBox b;
@@ -52,8 +68,6 @@ bool readMotGroundTruth(const std::string &path, GroundTruth &out, std::string &
 		return true;
 	});
 	if (!ok) {
-		if (error.rfind(path, 0) != 0)
-			error = "ground truth: " + error; // an I/O error, not a line error
 		out = GroundTruth();
 		return false;
 	}

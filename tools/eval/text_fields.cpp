@@ -61,6 +61,15 @@ bool parseLong(const std::string &text, long &out)
 	return true;
 }
 
+std::string printable(const std::string &text, size_t max)
+{
+	std::string out = text.size() > max ? text.substr(0, max) + "..." : text;
+	for (char &c : out)
+		if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+			c = '?';
+	return out;
+}
+
 std::string lineError(const std::string &path, long line, const std::string &message)
 {
 	return path + ":" + std::to_string(line) + ": " + message;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace calped::eval_tool {
@@ -14,6 +15,10 @@ std::vector<std::string> splitCsvLine(const std::string &line);
 bool parseDouble(const std::string &text, double &out); // finite values only
 bool parseLong(const std::string &text, long &out);     // decimal integer (also "12.0")
 
+// Input text for a message: at most `max` bytes ("..." when cut), control characters as
+// '?', so a message stays one printable line whatever the file holds.
+std::string printable(const std::string &text, size_t max = 40);
+
 // "FILE:LINE: message", the form every reader uses for malformed input.
 std::string lineError(const std::string &path, long line, const std::string &message);
 
@@ -21,8 +26,28 @@ std::string lineError(const std::string &path, long line, const std::string &mes
 // Fails with a message naming the file if it cannot be opened or read.
 template <typename F>
 bool forEachLine(const std::string &path, std::string &error, F onLine);
+// The same over text already in memory.
+template <typename F>
+bool forEachLineIn(std::string_view text, F onLine);
 
 bool readTextFile(const std::string &path, std::string &out, std::string &error);
+
+template <typename F>
+bool forEachLineIn(std::string_view text, F onLine)
+{
+	long lineNo = 0;
+	size_t pos = 0;
+	while (pos < text.size()) {
+		size_t end = text.find('\n', pos);
+		if (end == std::string_view::npos)
+			end = text.size();
+		lineNo++;
+		if (!onLine(lineNo, std::string(text.substr(pos, end - pos))))
+			return false;
+		pos = end + 1;
+	}
+	return true;
+}
 
 template <typename F>
 bool forEachLine(const std::string &path, std::string &error, F onLine)
@@ -30,18 +55,7 @@ bool forEachLine(const std::string &path, std::string &error, F onLine)
 	std::string text;
 	if (!readTextFile(path, text, error))
 		return false;
-	long lineNo = 0;
-	size_t pos = 0;
-	while (pos < text.size()) {
-		size_t end = text.find('\n', pos);
-		if (end == std::string::npos)
-			end = text.size();
-		lineNo++;
-		if (!onLine(lineNo, text.substr(pos, end - pos)))
-			return false;
-		pos = end + 1;
-	}
-	return true;
+	return forEachLineIn(text, onLine);
 }
 
 } // namespace calped::eval_tool

@@ -74,16 +74,21 @@ const char *quote(std::string_view s, char *buffer, size_t size)
 	if (size == 0)
 		return "";
 	size_t n = s.size();
+	size_t copied = n;
 	if (n < size) {
 		if (n > 0) // an empty view may have no data pointer at all
 			std::memcpy(buffer, s.data(), n);
 		buffer[n] = '\0';
-		return buffer;
+	} else {
+		copied = size > 4 ? size - 4 : 0;
+		std::memcpy(buffer, s.data(), copied);
+		std::memcpy(buffer + copied, "...", size - copied > 3 ? 4 : size - copied);
+		buffer[size - 1] = '\0';
 	}
-	size_t keep = size > 4 ? size - 4 : 0;
-	std::memcpy(buffer, s.data(), keep);
-	std::memcpy(buffer + keep, "...", size - keep > 3 ? 4 : size - keep);
-	buffer[size - 1] = '\0';
+	// Messages are one printable line: control bytes from the input (NUL too) become '?'.
+	for (size_t i = 0; i < copied; i++)
+		if (static_cast<unsigned char>(buffer[i]) < 0x20 || buffer[i] == 0x7f)
+			buffer[i] = '?';
 	return buffer;
 }
 

@@ -35,7 +35,8 @@ enum class NumberResult { Ok, NotANumber, NotFinite };
 // The whole of `s` must be one decimal number (optional sign, exponent); locale-independent.
 NumberResult parseNumber(std::string_view s, double &out);
 
-// Copies at most `size - 1` characters of `s` into `buffer` for messages, with "..." when cut.
+// Copies at most `size - 1` characters of `s` into `buffer` for messages, with "..." when cut
+// and '?' for control characters (a message stays one printable line).
 const char *quote(std::string_view s, char *buffer, size_t size);
 
 // "name:line: message" (line 0 leaves the line out).

@@ -170,8 +170,8 @@ Status Parser::readName(std::string &out)
 	if (atEnd())
 		return endOfFile();
 	if (!isNameStart(peek())) {
-		char c[2] = { peek(), '\0' };
-		return error("expected a name, found '%s'", c);
+		char c[2];
+		return error("expected a name, found '%s'", quote(text_.substr(pos_, 1), c, sizeof(c)));
 	}
 	size_t start = pos_;
 	while (!atEnd() && isNameChar(peek()))
@@ -207,6 +207,7 @@ Status Parser::attributeValue(std::string &out)
 		if (semi == std::string_view::npos || semi - pos_ > 10)
 			return error("'&' does not start an entity (write &amp;)");
 		const std::string_view ent = text_.substr(pos_ + 1, semi - pos_ - 1);
+		char q[16];
 		if (ent == "lt") {
 			out += '<';
 		} else if (ent == "gt") {
@@ -238,10 +239,10 @@ Status Parser::attributeValue(std::string &out)
 			}
 			if (!okDigits || cp == 0 || cp > 0x10ffff)
 				return error("bad character reference '&%s;'",
-					     std::string(ent).c_str());
+					     quote(ent, q, sizeof(q)));
 			appendUtf8(out, cp);
 		} else {
-			return error("unknown entity '&%s;'", std::string(ent).c_str());
+			return error("unknown entity '&%s;'", quote(ent, q, sizeof(q)));
 		}
 		advance(semi + 1 - pos_);
 	}

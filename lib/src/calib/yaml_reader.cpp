@@ -179,14 +179,15 @@ Status YamlDocument::split()
 		if (!(k.lineStart && k.type == YamlToken::Scalar))
 			return fileError(ErrorCode::ParseError, name_, k.line,
 					 "expected a top-level 'key:' at the start of the line");
+		char q[48];
 		if (i + 1 >= tokens_.size() || tokens_[i + 1].type != YamlToken::Colon)
 			return fileError(ErrorCode::ParseError, name_, k.line,
-					 "expected ':' after the key '%s'", k.text.c_str());
+					 "expected ':' after the key '%s'", quote(k.text, q, sizeof(q)));
 		for (const YamlEntry &e : entries_)
 			if (e.key == k.text)
 				return fileError(ErrorCode::ParseError, name_, k.line,
-						 "%s given twice (first on line %d)", k.text.c_str(),
-						 e.line);
+						 "%s given twice (first on line %d)",
+						 quote(k.text, q, sizeof(q)), e.line);
 		YamlEntry entry;
 		entry.key = k.text;
 		entry.line = k.line;
@@ -209,7 +210,7 @@ Status YamlDocument::split()
 		if (depth > 0)
 			return fileError(ErrorCode::ParseError, name_, lastLine_,
 					 "value of '%s' (line %d) is not closed with '%s' (truncated?)",
-					 entry.key.c_str(), entry.line, "]' or '}");
+					 quote(entry.key, q, sizeof(q)), entry.line, "]' or '}");
 		entry.end = j;
 		entries_.push_back(std::move(entry));
 		i = j;
@@ -339,9 +340,11 @@ Status YamlDocument::matrix(const YamlEntry &e, Matrix &out) const
 			continue;
 		}
 		const YamlToken *v = at(i);
-		if (!v || v->type != YamlToken::Scalar)
+		if (!v || v->type != YamlToken::Scalar) {
+			char q[32];
 			return fileError(ErrorCode::ParseError, name_, lineAt(i),
-					 "'%s': %s needs a value", key, field.c_str());
+					 "'%s': %s needs a value", key, quote(field, q, sizeof(q)));
+		}
 		i++;
 		if (field == "rows" || field == "cols") {
 			int &target = field == "rows" ? rows : cols;
@@ -349,8 +352,9 @@ Status YamlDocument::matrix(const YamlEntry &e, Matrix &out) const
 				return fileError(ErrorCode::ParseError, name_, fieldLine,
 						 "'%s': %s given twice", key, field.c_str());
 			double x = 0;
-			if (parseNumber(v->text, x) != NumberResult::Ok || x != static_cast<int>(x) ||
-			    x < 1 || x > 64) {
+			// Range first: casting a value beyond int is undefined (found by fuzzing).
+			if (parseNumber(v->text, x) != NumberResult::Ok || !(x >= 1 && x <= 64) ||
+			    x != static_cast<int>(x)) {
 				char q[32];
 				return fileError(ErrorCode::ParseError, name_, v->line,
 						 "'%s': %s '%s' is not a whole number in 1..64", key,

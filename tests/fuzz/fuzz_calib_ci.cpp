@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// loadTownCentreCi on arbitrary bytes: Oxford Town Centre .ci text.
+#include <cstddef>
+#include <cstdint>
+
+#include <calped/calibration.h>
+
+#include "fuzz_calibration.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+	const char *name = "fuzz.ci";
+	calped::CameraModel camera;
+	const calped::Status st =
+		calped::loadTownCentreCi(reinterpret_cast<const char *>(data), size, name, camera);
+	calped::fuzz::checkCalibration(st, camera, name);
+	return 0;
+}
