@@ -5,7 +5,7 @@
 #   build/       release
 #   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer, meson's 'sanitize' setup
 #                (any report fails the test; docs/testing.md)
-# then runs every libFuzzer target for $CALPED_FUZZ_SECONDS (default 20) seconds
+# then runs every libFuzzer target for $CALPED_FUZZ_SECONDS (default 10) seconds
 # (scripts/fuzz.sh, build-fuzz/, clang-14), then cross-builds the suite for each of
 # $CALPED_CROSS (default aarch64; empty: none) and runs it under qemu-user
 # (scripts/cross-test.sh, build-aarch64/).
@@ -39,12 +39,17 @@ run_suite() {
 		failed_steps+=("$name build")
 		return
 	fi
-	local log="$builddir/meson-logs/testlog.junit.xml"
+	# SUITE_TEST_ARGS: extra meson test arguments, e.g. --setup=sanitize; a test setup
+	# names Meson's log after it (testlog-sanitize.junit.xml).
+	local test_args=(${SUITE_TEST_ARGS-})
+	local setup=
+	for a in "${test_args[@]}"; do
+		[[ $a == --setup=* ]] && setup=-${a#--setup=}
+	done
+	local log="$builddir/meson-logs/testlog$setup.junit.xml"
 	rm -f "$log"
 	# gtest leaves NAME.xml beside each test; a stale one must not stand in for a crash.
 	find "$builddir" -maxdepth 1 -name '*.xml' -delete
-	# SUITE_TEST_ARGS: extra meson test arguments, e.g. --setup=sanitize.
-	local test_args=(${SUITE_TEST_ARGS-})
 	if ! meson test -C "$builddir" --print-errorlogs --num-processes "$jobs" --no-rebuild \
 		"${test_args[@]}"; then
 		failed_steps+=("$name tests")
@@ -67,7 +72,7 @@ echo
 echo "=== fuzz: build-fuzz"
 fuzz_junit=build-fuzz/fuzz-junit.xml
 rm -f "$fuzz_junit"
-if ! bash scripts/fuzz.sh "${CALPED_FUZZ_SECONDS:-20}" --junit "$fuzz_junit"; then
+if ! bash scripts/fuzz.sh "${CALPED_FUZZ_SECONDS:-10}" --junit "$fuzz_junit"; then
 	failed_steps+=("fuzz")
 fi
 if [[ -f $fuzz_junit ]]; then
