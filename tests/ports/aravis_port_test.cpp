@@ -16,7 +16,7 @@
 
 #include <calped/calped.h>
 
-#include "alloc_counter.h"
+#include "common/alloc_counter.h"
 #include "aravis_source.h"
 #include "fake_gv_camera.h"
 #include "file_source.h"

@@ -14,7 +14,7 @@
 
 #include <stb_image_write.h>
 
-#include "alloc_counter.h"
+#include "common/alloc_counter.h"
 #include "file_source.h"
 
 using namespace calped;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-#include "alloc_counter.h"
+#include "common/alloc_counter.h"
 
 #include <atomic>
 #include <cstdlib>
