@@ -150,14 +150,7 @@ int run(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-	int code;
-	try {
-		code = run(argc, argv);
-	} catch (const std::bad_alloc &) {
-		code = calped::cliFail(kProgram, calped::kExitRuntime, "out of memory");
-	} catch (const std::exception &e) {
-		code = calped::cliFail(kProgram, calped::kExitRuntime, std::string("internal error: ") + e.what());
-	}
+	const int code = calped::runGuarded(kProgram, [&] { return run(argc, argv); });
 	arv_shutdown(); // frees Aravis's global state (interfaces, device lists)
 	return code;
 }

@@ -80,11 +80,5 @@ int run(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-	try {
-		return run(argc, argv);
-	} catch (const std::bad_alloc &) {
-		return calped::cliFail(kProgram, calped::kExitRuntime, "out of memory");
-	} catch (const std::exception &e) {
-		return calped::cliFail(kProgram, calped::kExitRuntime, std::string("internal error: ") + e.what());
-	}
+	return calped::runGuarded(kProgram, [&] { return run(argc, argv); });
 }

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// One-line error reporting shared by the command-line tools (calped-detect, calped-eval).
+// One-line error reporting shared by the command-line tools and the examples.
 #pragma once
 
 #include <cstdio>
+#include <exception>
+#include <new>
 #include <string>
 
 namespace calped {
@@ -19,6 +21,20 @@ inline int cliFail(const char *program, int code, std::string message)
 			c = ' ';
 	std::fprintf(stderr, "%s: %s\n", program, message.c_str());
 	return code;
+}
+
+// Runs body() and turns an exception escaping it (out of memory, an internal error) into
+// one error line and kExitRuntime: the programs' last line of defence, never a crash.
+template <typename Body>
+int runGuarded(const char *program, Body body)
+{
+	try {
+		return body();
+	} catch (const std::bad_alloc &) {
+		return cliFail(program, kExitRuntime, "out of memory");
+	} catch (const std::exception &e) {
+		return cliFail(program, kExitRuntime, std::string("internal error: ") + e.what());
+	}
 }
 
 } // namespace calped

@@ -175,11 +175,5 @@ int main(int argc, char **argv)
 		std::fputs(usageText(), stdout);
 		return 0;
 	}
-	try {
-		return run(opt);
-	} catch (const std::bad_alloc &) {
-		return fail(kExitRuntime, "out of memory");
-	} catch (const std::exception &e) {
-		return fail(kExitRuntime, std::string("internal error: ") + e.what());
-	}
+	return calped::runGuarded("calped-detect", [&] { return run(opt); });
 }

@@ -260,11 +260,5 @@ int main(int argc, char **argv)
 		std::fputs(evalUsageText(), stdout);
 		return 0;
 	}
-	try {
-		return run(opt);
-	} catch (const std::bad_alloc &) {
-		return fail(kExitRuntime, "out of memory");
-	} catch (const std::exception &e) {
-		return fail(kExitRuntime, std::string("internal error: ") + e.what());
-	}
+	return calped::runGuarded("calped-eval", [&] { return run(opt); });
 }
