@@ -28,8 +28,10 @@ public:
 	// Whether (x, y) lies in any region.
 	bool contains(float x, float y) const;
 
-	// A region around a detection box, unless the box's centre is in one already. Returns
-	// false (and counts it) when the capacity is reached.
+	// A region around a detection box, unless the box's centre is in one already; it is
+	// cut back where it would overlap an existing region, so regions never overlap and
+	// each holds its detection's centre. Returns false (and counts it) when the capacity
+	// is reached.
 	bool addAround(const Detection &box);
 
 	// 3.4: regions without a detection inside this frame age; old ones are removed.
@@ -38,6 +40,9 @@ public:
 	uint64_t dropped() const { return dropped_; }
 
 private:
+	// Shrink r along one axis to end where `other` begins, keeping (cx, cy) inside r.
+	static void clipAgainst(DenseRegion &r, const DenseRegion &other, float cx, float cy);
+
 	std::vector<DenseRegion> regions_;
 	int count_ = 0;
 	int persistence_ = 1;
