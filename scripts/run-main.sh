@@ -12,6 +12,8 @@
 #   docs/results.md           tables, plots and sample frames, machine, date and commit
 #   docs/results/             the plots and overlays it links
 #   out/main/eval.json        one object per (method, resize); out/main/dets/ their CSVs
+# and again with the resize done inside the feature pyramid (tables in results.md,
+# out/main/eval_in_pyramid.json, out/main/dets_in_pyramid/).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -95,6 +97,13 @@ echo "run-main: ${ecmd[*]}"
 "${ecmd[@]}" | tee "$out/eval.txt"
 # The plots' data and gnuplot scripts are for redrawing, not for reading: keep them in out/.
 find "$results" -maxdepth 1 -type f \( -name '*.dat' -o -name '*.gp' \) -exec mv -t "$out/plots" {} +
+# The same runs with the resize done inside the feature pyramid (DetectorConfig::
+# resizeInPyramid, the toolbox's nOctUp): tables only, beside the ones above.
+pcmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
+	--methods generic,calibrated --resizes 1.5,2.0,2.5 --jobs "$eval_jobs" --resize-in-pyramid
+	--json "$out/eval_in_pyramid.json" --dets "$out/dets_in_pyramid" --markdown "$page.pyramid")
+echo "run-main: ${pcmd[*]}"
+"${pcmd[@]}" | tee "$out/eval_in_pyramid.txt"
 eval_wall=$((SECONDS - eval_start))
 
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
@@ -111,13 +120,24 @@ cpu=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
 	echo "on one thread. calped-eval took $eval_wall s of wall time for all its runs over all frames."
 	echo
 	cat "$page.part"
+	echo
+	echo "## Resize inside the pyramid"
+	echo
+	echo "The same runs with \`--resize-in-pyramid\`: colour is converted at the frame's size and each"
+	echo "computed level resampled from it (the toolbox's nOctUp) instead of the frame being resized"
+	echo "first ([calibrated.md](calibrated.md#resize-inside-the-pyramid))."
+	echo
+	sed -e '/^### Plots/,$d' -e 's/^### /#### /' "$page.pyramid"
 } >"$page"
-rm -f "$page.part"
+rm -f "$page.part" "$page.pyramid"
 
 {
 	echo
 	echo "evaluation (calped-eval, $eval_wall s wall time, runs at a time: $eval_jobs): $page, $out/eval.json"
 	cat "$out/eval.txt"
+	echo
+	echo "resize inside the pyramid: $out/eval_in_pyramid.json"
+	cat "$out/eval_in_pyramid.txt"
 	echo
 	echo "main job wall time: $((SECONDS - start)) s"
 } | tee -a "$out/summary.txt"

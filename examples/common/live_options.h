@@ -15,6 +15,7 @@ struct LiveOptions {
 	std::string calibPath;     // --calib FILE
 	bool calibrated = false;   // --method calibrated
 	double resize = 1.0;       // --resize R
+	bool resizeInPyramid = false; // --resize-in-pyramid
 	double minHeight = 1.4;    // --min-height H, metres
 	double maxHeight = 2.2;    // --max-height H, metres
 	std::string overlayDir;    // --overlay DIR

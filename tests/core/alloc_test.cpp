@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Bounded memory: after Detector::create(), detect() allocates nothing on the heap.
 // This binary links tests/common/alloc_counter.cpp, which replaces operator new to count calls.
+#include <cmath>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -67,11 +68,13 @@ TEST(BoundedMemory, CountingAllocatorSeesAllocations)
 TEST(BoundedMemory, DetectAllocatesNothingSynthetic)
 {
 	const Model model = test::randomModel(7, 512);
-	for (double resize : { 1.0, 2.0 }) {
+	// Resizes of the frame, then resizes inside the pyramid (negative here).
+	for (double resize : { 1.0, 2.0, -2.0, -2.5 }) {
 		DetectorConfig cfg;
 		cfg.maxWidth = 320;
 		cfg.maxHeight = 240;
-		cfg.resize = resize;
+		cfg.resize = std::fabs(resize);
+		cfg.resizeInPyramid = resize < 0;
 		cfg.cascadeThreshold = -10.0f; // let many windows through, to exercise NMS
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(model, cfg, det).ok());
@@ -85,7 +88,8 @@ TEST(BoundedMemory, DetectAllocatesNothingSynthetic)
 		EXPECT_EQ(allocationsDuring(*det, small, 200, 150, &detections), 0) << "resize " << resize;
 		std::vector<std::vector<uint8_t>> tooBig = { test::randomImage(9, 400, 300) };
 		EXPECT_EQ(allocationsDuring(*det, tooBig, 400, 300, &detections), 0) << "resize " << resize;
-		std::printf("resize %.1f: %d detections over the frames, 0 allocations\n", resize, detections);
+		std::printf("resize %.1f%s: %d detections over the frames, 0 allocations\n", cfg.resize,
+			    cfg.resizeInPyramid ? " in the pyramid" : "", detections);
 		EXPECT_GT(detections, 0);
 	}
 }
@@ -105,16 +109,21 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 	cfg.method = DetectionMethod::Calibrated;
 	cfg.camera = &camera;
 	cfg.cascadeThreshold = -10.0f;
-	std::unique_ptr<Detector> det;
-	ASSERT_TRUE(Detector::create(test::randomModel(7, 512), cfg, det).ok());
-	std::vector<std::vector<uint8_t>> frames;
-	for (uint32_t s = 0; s < 3; s++)
-		frames.push_back(test::randomImage(s, 320, 240));
-	int detections = 0;
-	EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0);
-	std::printf("calibrated, resize 2: %d detections, %llu windows in the last frame, 0 allocations\n",
-		    detections, (unsigned long long)det->lastStats().windows);
-	EXPECT_GT(det->lastStats().windows, 0u);
+	for (bool inPyramid : { false, true }) {
+		cfg.resizeInPyramid = inPyramid;
+		std::unique_ptr<Detector> det;
+		ASSERT_TRUE(Detector::create(test::randomModel(7, 512), cfg, det).ok());
+		std::vector<std::vector<uint8_t>> frames;
+		for (uint32_t s = 0; s < 3; s++)
+			frames.push_back(test::randomImage(s, 320, 240));
+		int detections = 0;
+		EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0);
+		std::printf("calibrated, resize 2%s: %d detections, %llu windows in the last frame, 0 "
+			    "allocations\n",
+			    inPyramid ? " in the pyramid" : "", detections,
+			    (unsigned long long)det->lastStats().windows);
+		EXPECT_GT(det->lastStats().windows, 0u);
+	}
 }
 
 TEST(BoundedMemory, DetectAllocatesNothingOnPets)
@@ -149,11 +158,13 @@ TEST(BoundedMemory, EveryPixelFormatAllocatesNothing)
 	// Strip-wise conversion at resize 1, whole-frame conversion before resize 2; full,
 	// smaller odd-sized and rejected frames of every format.
 	const Model model = test::randomModel(7, 512);
-	for (double resize : { 1.0, 2.0 }) {
+	// Resizes of the frame, then resizes inside the pyramid (negative here).
+	for (double resize : { 1.0, 2.0, -2.0, -2.5 }) {
 		DetectorConfig cfg;
 		cfg.maxWidth = 320;
 		cfg.maxHeight = 240;
-		cfg.resize = resize;
+		cfg.resize = std::fabs(resize);
+		cfg.resizeInPyramid = resize < 0;
 		cfg.cascadeThreshold = -10.0f;
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(model, cfg, det).ok());

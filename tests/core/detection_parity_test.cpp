@@ -82,7 +82,7 @@ double matchedFraction(const std::map<int, std::vector<Box>> &from,
 	return n ? double(matched) / n : 0;
 }
 
-void runParity(const char *refFile, double resize, double minMatched)
+void runParity(const char *refFile, double resize, double minMatched, bool resizeInPyramid = false)
 {
 	const std::string shared = test::sharedDir();
 	const std::string blobPath = test::inriaModelBlob();
@@ -97,6 +97,7 @@ void runParity(const char *refFile, double resize, double minMatched)
 	cfg.maxWidth = 768;
 	cfg.maxHeight = 576;
 	cfg.resize = resize;
+	cfg.resizeInPyramid = resizeInPyramid;
 	std::unique_ptr<Detector> det;
 	st = Detector::create(model, cfg, det);
 	ASSERT_TRUE(st.ok()) << st.message();
@@ -144,3 +145,8 @@ void runParity(const char *refFile, double resize, double minMatched)
 // the ~1% score noise, where the other one wins (docs/parity.md). Resize 2 reaches 98%.
 TEST(DetectionParity, Frames1To50Native) { runParity("dets_native.csv", 1.0, 0.93); }
 TEST(DetectionParity, Frames1To50Resize2) { runParity("dets_up2x.csv", 2.0, 0.95); }
+// Resize 2 inside the pyramid is the toolbox's nOctUp = 1 on the native frame.
+TEST(DetectionParity, Frames1To50Resize2InPyramid)
+{
+	runParity("dets_octup1.csv", 2.0, 0.95, true);
+}

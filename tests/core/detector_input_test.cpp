@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Bad frames and bad configurations get a documented error, and the detector keeps
 // working afterwards.
+#include <string>
 #include <gtest/gtest.h>
 
 #include <calped/detector.h>
@@ -200,6 +201,11 @@ TEST(DetectorInput, BadConfigurations)
 	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);
 	cfg.resize = 100;
 	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);
+	cfg.resize = 0.5; // the pyramid only upscales
+	cfg.resizeInPyramid = true;
+	const Status down = Detector::create(model, cfg, det);
+	EXPECT_EQ(down.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(down.message()).find("pyramid"), std::string::npos) << down.message();
 	cfg = DetectorConfig();
 	cfg.maxCandidates = 0;
 	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // The pyramid of PETS frame 1 against Dollár's toolbox (chnsPyramid): scale lists at
 // native size and upscaled 2x, and every smoothed, padded level at native size.
+#include <cmath>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -83,6 +84,36 @@ TEST(PyramidParity, ScalesOctaveUp)
 		EXPECT_NEAR(s.levels[i].scale, ref[i].scale, 1e-12) << "level " << i + 1;
 		EXPECT_EQ(s.levels[i].source + 1, ref[i].source) << "level " << i + 1;
 	}
+}
+
+// Resizing inside the pyramid gives the resized frame's levels: the same sizes, with
+// scales relative to the frame itself (resize 2 is nOctUp + 1 exactly).
+TEST(PyramidScales, UpscaleInsideEqualsResizedFrame)
+{
+	ModelParams p;
+	for (double r : { 1.5, 2.0, 2.5 }) {
+		const int w = 768, h = 576, w1 = int(std::lround(w * r)), h1 = int(std::lround(h * r));
+		ScaleList inside, resized;
+		ASSERT_TRUE(computeScales(p, h, w, inside, r));
+		ASSERT_TRUE(computeScales(p, h1, w1, resized));
+		ASSERT_EQ(inside.count, resized.count) << "resize " << r;
+		for (int i = 0; i < inside.count; i++) {
+			const PyramidLevel &a = inside.levels[i], &b = resized.levels[i];
+			EXPECT_EQ(a.width, b.width) << "resize " << r << " level " << i;
+			EXPECT_EQ(a.height, b.height) << "resize " << r << " level " << i;
+			EXPECT_NEAR(a.scale, b.scale * r, 1e-9) << "resize " << r << " level " << i;
+			EXPECT_EQ(a.computed, b.computed);
+			EXPECT_EQ(a.source, b.source);
+		}
+	}
+	ModelParams up = p;
+	up.nOctUp = 1;
+	ScaleList twice, octUp;
+	ASSERT_TRUE(computeScales(p, 576, 768, twice, 2.0));
+	ASSERT_TRUE(computeScales(up, 576, 768, octUp));
+	ASSERT_EQ(twice.count, octUp.count);
+	for (int i = 0; i < twice.count; i++)
+		EXPECT_EQ(twice.levels[i].scale, octUp.levels[i].scale) << "level " << i;
 }
 
 TEST(PyramidParity, Frame1LevelsWithinTolerance)

@@ -198,6 +198,11 @@ TEST_F(CliTest, ResizeBoundsAreAccepted)
 	}
 }
 
+TEST_F(CliTest, ResizeInPyramidIsAFlag)
+{
+	expectOneLineError(detect({ "--model", "m", "--resize-in-pyramid=1", someImage() }), 2);
+}
+
 TEST_F(CliTest, BadCountsAreUsageErrors)
 {
 	std::string img = someImage();
@@ -395,6 +400,19 @@ TEST_F(CliRunTest, JsonlToStdoutAndMaxFrames)
 	EXPECT_EQ(lines[1].rfind("{\"frame\":2,", 0), 0u) << lines[1];
 	// Not quiet: the summary line on stderr counts the frames.
 	EXPECT_NE(r.err.find("summary: frames=2 "), std::string::npos) << r.err;
+}
+
+TEST_F(CliRunTest, ResizeInsideThePyramid)
+{
+	// Upscaling inside the pyramid runs; downscaling there is refused by name.
+	ProcessResult r = detect({ "--model", model_, "--resize", "2", "--resize-in-pyramid", "--jsonl", "-",
+				   "--quiet", path("frames") });
+	ASSERT_TRUE(r.exited) << r.err;
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	EXPECT_EQ(splitLines(r.out).size(), 3u) << r.out;
+	r = detect({ "--model", model_, "--resize", "0.5", "--resize-in-pyramid", path("frames/a.png") });
+	expectOneLineError(r, 1);
+	EXPECT_NE(r.err.find("pyramid"), std::string::npos) << r.err;
 }
 
 TEST_F(CliRunTest, OverlaysEveryKthFrameAsRgb)

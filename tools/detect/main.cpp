@@ -80,6 +80,7 @@ int run(const Options &opt)
 	config.maxWidth = maxW;
 	config.maxHeight = maxH;
 	config.resize = opt.resize;
+	config.resizeInPyramid = opt.resizeInPyramid;
 	config.disableNms = opt.noNms;
 	config.boxVoting = !opt.noBoxVoting;
 	CameraModel camera;

@@ -50,6 +50,8 @@ const char *usageText()
 	       "options:\n"
 	       "  --model BLOB        calped model blob (.cpm, made by calped-convert)\n"
 	       "  --resize R          upscale each frame by R before detecting, 0 < R <= 8 (default 1)\n"
+	       "  --resize-in-pyramid do the resize (>= 1) inside the feature pyramid instead\n"
+	       "                      (the toolbox's nOctUp; faster, docs/cli.md)\n"
 	       "  --csv FILE          write detections as CSV: frame,x,y,w,h,score\n"
 	       "  --jsonl FILE|-      write one JSON object per frame (- for standard output)\n"
 	       "  --overlay DIR       write DIR/NNNNNN.png with the detections drawn in green\n"
@@ -101,12 +103,17 @@ bool parseOptions(int argc, const char *const *argv, Options &out, std::string &
 			inlineValue = true;
 		}
 
-		if (name == "--no-nms" || name == "--quiet" || name == "--no-box-voting") {
+		bool *flag = name == "--no-nms"              ? &out.noNms
+			     : name == "--quiet"             ? &out.quiet
+			     : name == "--no-box-voting"     ? &out.noBoxVoting
+			     : name == "--resize-in-pyramid" ? &out.resizeInPyramid
+							     : nullptr;
+		if (flag) {
 			if (inlineValue) {
 				error = name + " takes no value";
 				return false;
 			}
-			(name == "--no-nms" ? out.noNms : name == "--quiet" ? out.quiet : out.noBoxVoting) = true;
+			*flag = true;
 			continue;
 		}
 

@@ -17,6 +17,7 @@ struct Options {
 	long maxFrames = 0; // 0 means every frame
 	bool noNms = false;
 	bool noBoxVoting = false;
+	bool resizeInPyramid = false;
 	std::string calibPath;         // calibration file (any format calibration.h reads)
 	bool calibrated = false;       // --method calibrated
 	double minHeight = 1.4;        // plausible person heights, metres

@@ -27,7 +27,7 @@ const char *evalUsageText()
 	       "                   [--calib FILE] [--methods generic[,calibrated]] [--resizes 1.5,2.0,2.5]\n"
 	       "                   [--json FILE] [--dets DIR] [--plots DIR] [--overlays DIR]\n"
 	       "                   [--overlay-frames 1,200,400,600] [--overlay-score S] [--markdown FILE]\n"
-	       "                   [--max-frames N] [--jobs N] [--quiet]\n"
+	       "                   [--resize-in-pyramid] [--max-frames N] [--jobs N] [--quiet]\n"
 	       "       calped-eval --score-only DETS.csv[,DETS.csv...] --gt FILE\n"
 	       "                   (--frames DIR | --num-frames N) [--label NAME] [--json FILE] [--plots DIR]\n"
 	       "\n"
@@ -46,6 +46,8 @@ const char *evalUsageText()
 	       "  --methods LIST        generic and/or calibrated (default generic); calibrated\n"
 	       "                        needs --calib and is skipped with a notice without it\n"
 	       "  --resizes LIST        input resizes (default 1.0)\n"
+	       "  --resize-in-pyramid   resize inside the feature pyramid (the toolbox's nOctUp)\n"
+	       "                        instead of resampling each frame first; resizes >= 1\n"
 	       "  --json FILE           one JSON object per (method, resize)\n"
 	       "  --dets DIR            DIR/<method>_r<resize>.csv: frame,x,y,w,h,score\n"
 	       "  --plots DIR           TPR-vs-FPPF and stage-time PNG plots (needs gnuplot)\n"
@@ -72,8 +74,8 @@ bool parseEvalOptions(int argc, const char *const *argv, EvalOptions &out, std::
 			out.help = true;
 			return true;
 		}
-		if (arg == "--quiet") {
-			out.quiet = true;
+		if (arg == "--quiet" || arg == "--resize-in-pyramid") {
+			(arg == "--quiet" ? out.quiet : out.resizeInPyramid) = true;
 			continue;
 		}
 		std::string value;

@@ -28,6 +28,7 @@ struct EvalOptions {
 	int jobs = 1;
 	std::vector<std::string> scoreOnly; // detection CSVs to score instead of running
 	std::string label;                  // method name for a single --score-only file
+	bool resizeInPyramid = false; // DetectorConfig::resizeInPyramid for every run
 	bool quiet = false;
 	bool help = false;
 };

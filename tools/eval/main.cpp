@@ -203,6 +203,7 @@ int run(const EvalOptions &opt)
 	settings.overlayDir = opt.overlayDir;
 	settings.overlayFrames = opt.overlayFrames;
 	settings.overlayScore = opt.overlayScore;
+	settings.resizeInPyramid = opt.resizeInPyramid;
 	settings.quiet = opt.quiet;
 	notice(opt, std::to_string(specs.size()) + " run(s), " +
 			    (input.isVideo() ? "video " + input.video

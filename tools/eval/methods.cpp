@@ -23,6 +23,7 @@ protected:
 		config.maxWidth = setup.maxWidth;
 		config.maxHeight = setup.maxHeight;
 		config.resize = setup.resize;
+		config.resizeInPyramid = setup.resizeInPyramid;
 		Status st = Detector::create(*setup.model, config, detector_);
 		if (!st.ok()) {
 			error = std::string("cannot set up the detector: ") + st.message();

@@ -17,6 +17,7 @@ struct MethodSetup {
 	std::string calibrationPath; // --calib FILE, may be empty
 	int maxWidth = 0, maxHeight = 0;
 	double resize = 1.0;
+	bool resizeInPyramid = false;
 };
 
 // A detector as the harness drives it: one frame in, detections and the detector's own

@@ -50,6 +50,7 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 	setup.maxWidth = s.input->width;
 	setup.maxHeight = s.input->height;
 	setup.resize = resize;
+	setup.resizeInPyramid = s.resizeInPyramid;
 	std::unique_ptr<Method> method;
 	if (!entry.create(setup, method, error))
 		return false;

@@ -58,6 +58,7 @@ struct RunSettings {
 	std::string overlayDir; // empty = none
 	std::vector<long> overlayFrames;
 	double overlayScore = 0;
+	bool resizeInPyramid = false;
 	bool quiet = false;
 };
 

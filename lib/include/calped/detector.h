@@ -27,6 +27,13 @@ struct DetectorConfig {
 	// round(size * resize) first, as the toolbox's imResample does; boxes come back in
 	// input pixels. 1.0 means no resampling.
 	double resize = 1.0;
+	// Do the resize inside the feature pyramid instead (needs resize >= 1): colour is
+	// converted at the input size and every computed level is resampled from it, as the
+	// toolbox does with nOctUp (resize 2 here is its nOctUp = 1 exactly). No upscaled
+	// frame is made and the colour conversion covers 1/resize^2 of the pixels, so it is
+	// faster; the channels differ slightly from the resized frame's (colour conversion
+	// and resampling in the other order). docs/calibrated.md has both measured.
+	bool resizeInPyramid = false;
 	// Capacity for windows that pass the cascade in one frame (before NMS). Excess windows
 	// are dropped and counted in FrameStats::droppedWindows, never silently lost.
 	int maxCandidates = 1 << 16;

@@ -39,26 +39,32 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	if (cfg.maxCandidates < 1 || cfg.maxCandidates > (1 << 24))
 		return Status::error(ErrorCode::InvalidArgument,
 				     "maxCandidates %d is outside 1..16777216", cfg.maxCandidates);
+	if (cfg.resizeInPyramid && cfg.resize < 1.0)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "resize %g inside the pyramid: it only upscales (resize >= 1)",
+				     cfg.resize);
 	config = cfg;
 	params_ = model.params;
-	maxWidth_ = scaledSize(cfg.maxWidth, cfg.resize);
-	maxHeight_ = scaledSize(cfg.maxHeight, cfg.resize);
+	frameResize_ = cfg.resizeInPyramid ? 1.0 : cfg.resize;
+	maxWidth_ = scaledSize(cfg.maxWidth, frameResize_);
+	maxHeight_ = scaledSize(cfg.maxHeight, frameResize_);
 	if (maxWidth_ < 1 || maxHeight_ < 1)
 		return Status::error(ErrorCode::InvalidArgument, "resize %g leaves no pixels",
 				     cfg.resize);
 
-	st = pyramid.init(params_, maxWidth_, maxHeight_);
+	st = pyramid.init(params_, maxWidth_, maxHeight_, kernels::bestKernels(),
+			  cfg.resizeInPyramid ? cfg.resize : 1.0);
 	if (!st.ok())
 		return st;
 	// Camera formats are converted a strip at a time, or whole before an input resize.
-	st = input_.init(cfg.maxWidth, cfg.maxHeight, cfg.resize != 1.0);
+	st = input_.init(cfg.maxWidth, cfg.maxHeight, frameResize_ != 1.0);
 	if (!st.ok())
 		return st;
 	try {
 		classifier.init(model, pyramid.rowStride(), pyramid.planeStride());
 		if (!std::isnan(cfg.cascadeThreshold))
 			classifier.setCascadeThreshold(cfg.cascadeThreshold);
-		if (cfg.resize != 1.0) {
+		if (frameResize_ != 1.0) {
 			resized_.assign(size_t(maxWidth_) * maxHeight_ * 3, 0);
 			const size_t taps = size_t(std::max(maxWidth_, maxHeight_)) + 8;
 			resizeX_.resize(taps);
@@ -98,7 +104,7 @@ Status DetectorImpl::initCalibrated()
 	Status st = pyramid.scalesFor(maxWidth_, maxHeight_, scales);
 	if (!st.ok())
 		return st;
-	st = plan_.build(camera_, params_, scales, config.resize, pyramid.padCellsH(),
+	st = plan_.build(camera_, params_, scales, frameResize_, pyramid.padCellsH(),
 			 pyramid.padCellsW(), classifier, config.minPersonHeight,
 			 config.maxPersonHeight);
 	if (!st.ok())
@@ -252,7 +258,7 @@ void DetectorImpl::addBoxes(int levelIndex, const kernels::WindowHit *hits, int 
 	// The box is the model's central window, shifted back by the padding.
 	const double shiftH = (p.modelDsPadH - double(p.modelDsH)) / 2 - p.padH;
 	const double shiftW = (p.modelDsPadW - double(p.modelDsW)) / 2 - p.padW;
-	const double r = config.resize;
+	const double r = frameResize_;
 	for (int i = 0; i < count; i++) {
 		Detection &d = candidates_[candidateCount_++];
 		d.x = float((hits[i].col * p.stride + shiftW) / l.scaleW / r);
@@ -273,12 +279,12 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	const auto tStart = Clock::now();
 
 	input_.begin(image);
-	if (config.resize != 1.0) {
+	if (frameResize_ != 1.0) {
 		// The resampler reads a whole RGB8 image: other formats are converted first.
 		ptrdiff_t stride;
 		const uint8_t *rgb = input_.wholeFrame(stride);
 		const int width = image.width, height = image.height;
-		const int w1 = scaledSize(width, config.resize), h1 = scaledSize(height, config.resize);
+		const int w1 = scaledSize(width, frameResize_), h1 = scaledSize(height, frameResize_);
 		if (w1 < 1 || h1 < 1)
 			return Status::error(ErrorCode::ImageTooSmall, "resize leaves no pixels");
 		if (!kernels::buildResampleTaps(width, w1, 1.0, resizeX_.data()) ||

@@ -56,7 +56,9 @@ private:
 	std::vector<uint32_t> frameList_;
 	// Camera frame -> RGB8 rows (docs/pixel-formats.md).
 	FrameInput input_;
-	// Input resampling ("resize").
+	// Input resampling ("resize"): the factor the frame itself is resized by (1 when
+	// the resize is done inside the pyramid, DetectorConfig::resizeInPyramid).
+	double frameResize_ = 1.0;
 	std::vector<uint8_t> resized_;
 	std::vector<kernels::ResampleTap> resizeX_, resizeY_;
 	std::vector<int32_t> resizeRow_;

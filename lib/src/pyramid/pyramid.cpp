@@ -28,9 +28,13 @@ void planesAt(uint16_t *base, int width, int height, Plane<uint16_t> out[kChanne
 } // namespace
 
 Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
-		     const kernels::KernelTable &k)
+		     const kernels::KernelTable &k, double upscale)
 {
 	k_ = &k;
+	if (!(upscale >= 1.0 && upscale <= 8.0))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "pyramid upscale %g is outside [1, 8]", upscale);
+	upscale_ = upscale;
 	if (params.shrink != 4 || params.nOrients != 6 || params.gradFull != 0 ||
 	    params.gradColorChn != 0 || params.pyramidSmooth > 1 || params.colorSmooth > 1 ||
 	    params.histBinSize != params.shrink)
@@ -61,9 +65,10 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 
 	try {
 		kernels::buildLuvTables(luvTables_);
-		// The first computed scale is 2^nOctUp: that image is the largest one processed.
-		const int up = 1 << params.nOctUp;
-		const int luvW = maxWidth * up + 8, luvH = maxHeight * up + 8;
+		// The first computed scale is upscale * 2^nOctUp: that image is the largest one
+		// processed.
+		const double up = upscale * double(1 << params.nOctUp);
+		const int luvW = int(std::ceil(maxWidth * up)) + 8, luvH = int(std::ceil(maxHeight * up)) + 8;
 		channels_.init(params, luvW, luvH, k);
 		for (int c = 0; c < 3; c++) {
 			luv_[c].allocate(maxWidth, maxHeight);
@@ -98,7 +103,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 
 Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
 {
-	if (!computeScales(params_, height, width, out))
+	if (!computeScales(params_, height, width, out, upscale_))
 		return Status::error(ErrorCode::InvalidArgument, "too many pyramid levels");
 	if (out.count == 0)
 		return Status::error(ErrorCode::ImageTooSmall,

@@ -31,8 +31,11 @@ class Pyramid
 {
 public:
 	// maxWidth x maxHeight: the largest RGB image build() will see (after any resize).
+	// upscale >= 1: the levels are those of the image resized by this factor, each
+	// resampled from the image's colour channels (computeScales) instead of the image
+	// being resized first.
 	Status init(const ModelParams &params, int maxWidth, int maxHeight,
-		    const kernels::KernelTable &k = kernels::bestKernels());
+		    const kernels::KernelTable &k = kernels::bestKernels(), double upscale = 1.0);
 
 	// Colour conversion and channels of the computed levels for one image, read from
 	// `input` a strip of RGB8 rows at a time: all of them, or (levelRows non-null, one
@@ -85,6 +88,7 @@ private:
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
 
 	ModelParams params_;
+	double upscale_ = 1.0;
 	const kernels::KernelTable *k_ = nullptr;
 	kernels::LuvTables luvTables_;
 	ChannelComputer channels_;

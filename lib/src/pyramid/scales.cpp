@@ -13,14 +13,15 @@ double mround(double v) { return std::round(v); }
 
 } // namespace
 
-bool computeScales(const ModelParams &p, int height, int width, ScaleList &out)
+bool computeScales(const ModelParams &p, int height, int width, ScaleList &out, double upscale)
 {
 	out.count = 0;
 	if (height <= 0 || width <= 0)
 		return true;
 	const double shrink = p.shrink;
 	const double minRatio = std::min(height / double(p.minDsH), width / double(p.minDsW));
-	const int n = int(std::floor(p.nPerOct * (p.nOctUp + std::log2(minRatio)) + 1));
+	const double octUp = p.nOctUp + std::log2(upscale);
+	const int n = int(std::floor(p.nPerOct * (octUp + std::log2(minRatio)) + 1));
 	if (n <= 0)
 		return true;
 	if (n > kMaxLevels)
@@ -31,7 +32,7 @@ bool computeScales(const ModelParams &p, int height, int width, ScaleList &out)
 	const double d0 = std::min(height, width), d1 = std::max(height, width);
 	double scales[kMaxLevels];
 	for (int i = 0; i < n; i++) {
-		const double s = std::pow(2.0, -double(i) / p.nPerOct + p.nOctUp);
+		const double s = std::pow(2.0, -double(i) / p.nPerOct + octUp);
 		const double base = mround(d0 * s / shrink) * shrink;
 		const double s0 = (base - 0.25 * shrink) / d0;
 		const double s1 = (base + 0.25 * shrink) / d0;

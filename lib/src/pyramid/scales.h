@@ -24,7 +24,11 @@ struct ScaleList {
 };
 
 // Fill `out` for an image of height x width pixels. Returns false if the model's
-// parameters would need more than kMaxLevels levels.
-bool computeScales(const ModelParams &p, int height, int width, ScaleList &out);
+// parameters would need more than kMaxLevels levels. `upscale` > 1 starts the pyramid
+// that much above the image, on top of the model's nOctUp: the toolbox's nOctUp
+// generalised to any factor (upscale 2 is nOctUp + 1 exactly), which gives the levels of
+// the image resized by `upscale` without resizing it.
+bool computeScales(const ModelParams &p, int height, int width, ScaleList &out,
+		   double upscale = 1.0);
 
 } // namespace calped
