@@ -127,7 +127,7 @@ cpu=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
 	echo "computed level resampled from it (the toolbox's nOctUp) instead of the frame being resized"
 	echo "first ([calibrated.md](calibrated.md#resize-inside-the-pyramid))."
 	echo
-	sed -e '/^### Plots/,$d' -e 's/^### /#### /' "$page.pyramid"
+	sed -e '/^Frames: /d' -e '/^### Plots/,$d' -e 's/^### /#### /' "$page.pyramid"
 } >"$page"
 rm -f "$page.part" "$page.pyramid"
 
