@@ -94,6 +94,33 @@ TEST(BoundedMemory, DetectAllocatesNothingSynthetic)
 	}
 }
 
+TEST(BoundedMemory, StaticRejectionAllocatesNothingAndDropsAStaticScene)
+{
+	// One random frame over and over: once the background is trusted, everything the
+	// detector finds on it is static, in any pixel format.
+	DetectorConfig cfg;
+	cfg.maxWidth = 320;
+	cfg.maxHeight = 240;
+	cfg.cascadeThreshold = -10.0f;
+	cfg.staticRejection.enabled = true;
+	cfg.staticRejection.warmupFrames = 2;
+	std::unique_ptr<Detector> det;
+	ASSERT_TRUE(Detector::create(test::randomModel(7, 512), cfg, det).ok());
+	const std::vector<uint8_t> rgb = test::randomImage(3, 320, 240);
+	for (PixelFormat f : { PixelFormat::RGB8, PixelFormat::NV12 }) {
+		const std::vector<test::FormattedImage> frames(4, test::encodeImage(rgb.data(), 320, 240, f));
+		int detections = 0;
+		EXPECT_EQ(allocationsDuring(*det, frames, &detections), 0) << pixelFormatName(f);
+		EXPECT_GT(det->lastStats().staticRejected, 0) << pixelFormatName(f);
+		Detections last;
+		ASSERT_TRUE(det->detect(frames[0].view(), last).ok());
+		EXPECT_EQ(last.count, 0) << pixelFormatName(f);
+		std::printf("static rejection, %s: %d detections over 4 frames, %d dropped in the last, "
+			    "0 allocations\n",
+			    pixelFormatName(f), detections, det->lastStats().staticRejected);
+	}
+}
+
 TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 {
 	Eigen::Matrix3d K;

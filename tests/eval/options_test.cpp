@@ -65,7 +65,9 @@ TEST(Methods, RegistryKnowsBothModes)
 	EXPECT_NE(findMethod("calibrated")->create, nullptr);
 	EXPECT_FALSE(findMethod("generic")->needsCalibration);
 	EXPECT_TRUE(findMethod("calibrated")->needsCalibration);
-	EXPECT_EQ(methodNames(), "generic, calibrated");
+	ASSERT_NE(findMethod("calibrated-static"), nullptr);
+	EXPECT_TRUE(findMethod("calibrated-static")->needsCalibration);
+	EXPECT_EQ(methodNames(), "generic, calibrated, calibrated-static");
 }
 
 TEST(OutputNames, ResizeWithOneDecimalUnlessMoreAreNeeded)

@@ -198,9 +198,13 @@ TEST_F(CliTest, ResizeBoundsAreAccepted)
 	}
 }
 
-TEST_F(CliTest, ResizeInPyramidIsAFlag)
+TEST_F(CliTest, FlagsTakeNoValue)
 {
-	expectOneLineError(detect({ "--model", "m", "--resize-in-pyramid=1", someImage() }), 2);
+	for (const char *flag : { "--resize-in-pyramid=1", "--reject-static=yes", "--no-nms=0" }) {
+		ProcessResult r = detect({ "--model", "m", flag, someImage() });
+		expectOneLineError(r, 2);
+		EXPECT_NE(r.err.find("takes no value"), std::string::npos) << flag << ": " << r.err;
+	}
 }
 
 TEST_F(CliTest, BadCountsAreUsageErrors)
@@ -408,6 +412,11 @@ TEST_F(CliRunTest, ResizeInsideThePyramid)
 	ProcessResult r = detect({ "--model", model_, "--resize", "2", "--resize-in-pyramid", "--jsonl", "-",
 				   "--quiet", path("frames") });
 	ASSERT_TRUE(r.exited) << r.err;
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	EXPECT_EQ(splitLines(r.out).size(), 3u) << r.out;
+	// With static rejection too: three frames are all inside its warm-up.
+	r = detect({ "--model", model_, "--resize", "2", "--resize-in-pyramid", "--reject-static",
+		     "--jsonl", "-", "--quiet", path("frames") });
 	ASSERT_EQ(r.exitCode, 0) << r.err;
 	EXPECT_EQ(splitLines(r.out).size(), 3u) << r.out;
 	r = detect({ "--model", model_, "--resize", "0.5", "--resize-in-pyramid", path("frames/a.png") });

@@ -64,6 +64,8 @@ const char *usageText()
 	       "  --min-height H      smallest plausible person, metres (default 1.4)\n"
 	       "  --max-height H      tallest plausible person, metres (default 2.2)\n"
 	       "  --no-box-voting     calibrated: keep the best window's box (the thesis's)\n"
+	       "  --reject-static     fixed camera: drop detections on static scene structure\n"
+	       "                      (frames must come from one camera, in order; docs/cli.md)\n"
 	       "  --quiet             no progress or summary on standard error\n"
 	       "  -h, --help          show this help\n"
 	       "\n"
@@ -107,6 +109,7 @@ bool parseOptions(int argc, const char *const *argv, Options &out, std::string &
 			     : name == "--quiet"             ? &out.quiet
 			     : name == "--no-box-voting"     ? &out.noBoxVoting
 			     : name == "--resize-in-pyramid" ? &out.resizeInPyramid
+			     : name == "--reject-static"     ? &out.rejectStatic
 							     : nullptr;
 		if (flag) {
 			if (inlineValue) {

@@ -59,6 +59,19 @@ public:
 	static bool create(const MethodSetup &setup, std::unique_ptr<Method> &out,
 			   std::string &error)
 	{
+		return createWith(setup, false, out, error);
+	}
+	// The same with static-scene rejection (DetectorConfig::staticRejection, defaults).
+	static bool createStatic(const MethodSetup &setup, std::unique_ptr<Method> &out,
+				 std::string &error)
+	{
+		return createWith(setup, true, out, error);
+	}
+
+private:
+	static bool createWith(const MethodSetup &setup, bool rejectStatic,
+			       std::unique_ptr<Method> &out, std::string &error)
+	{
 		std::vector<uint8_t> text;
 		if (!detect_tool::readFile(setup.calibrationPath, text, error, "calibration "))
 			return false;
@@ -72,13 +85,13 @@ public:
 		DetectorConfig config;
 		config.method = DetectionMethod::Calibrated;
 		config.camera = &m->camera_;
+		config.staticRejection.enabled = rejectStatic;
 		if (!m->setUp(setup, config, error))
 			return false;
 		out = std::move(m);
 		return true;
 	}
 
-private:
 	CameraModel camera_;
 };
 
@@ -89,6 +102,7 @@ const std::vector<MethodEntry> &methodRegistry()
 	static const std::vector<MethodEntry> kMethods = {
 		{ "generic", false, &GenericMethod::create },
 		{ "calibrated", true, &CalibratedMethod::create },
+		{ "calibrated-static", true, &CalibratedMethod::createStatic },
 	};
 	return kMethods;
 }

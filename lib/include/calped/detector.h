@@ -19,6 +19,21 @@ class CameraModel;
 // plausible world height can stand, given the camera's calibration.
 enum class DetectionMethod { Generic, Calibrated };
 
+// Beyond the thesis, for fixed cameras: drop detections on static scene structure (a
+// tripod, a sign or a post that looks like a person and is found in the same place frame
+// after frame). The detector keeps a background of the frame's 4x4-pixel grey cells as
+// an approximate running median (every frame moves each cell one grey level towards what
+// it sees) and drops a detection whose box has fewer than minForeground of its cells
+// differing from it by more than `difference` grey levels. A person who stands still
+// long enough fades into that background too (at one grey level per frame); the
+// background starts again when the frame size changes. docs/calibrated.md.
+struct StaticRejection {
+	bool enabled = false;
+	int difference = 10;        // grey levels, 1..254
+	float minForeground = 0.1f; // fraction of the box's cells, 0..1
+	int warmupFrames = 50;      // first frames of a background, none dropped (>= 1)
+};
+
 struct DetectorConfig {
 	// Largest input frame (before resizing) that detect() will accept.
 	int maxWidth = 1920;
@@ -62,6 +77,8 @@ struct DetectorConfig {
 	// score^4-weighted mean of the windows overlapping it (IoU > 0.6), which places it
 	// better than the single best window (docs/calibrated.md). Off: the thesis's boxes.
 	bool boxVoting = true;
+	// Either method: drop detections on static scene structure (off by default).
+	StaticRejection staticRejection;
 };
 
 // One detection in input-image pixels: top-left corner, size, classifier score. With a
@@ -85,6 +102,8 @@ struct FrameStats {
 	uint64_t sparseWindows = 0, denseWindows = 0;
 	int denseRegions = 0;
 	uint64_t droppedRegions = 0;
+	// Detections dropped as static scene structure (DetectorConfig::staticRejection).
+	int staticRejected = 0;
 	// Wall time per stage: input resize, channels of computed levels, approximated levels
 	// (with smoothing and padding), classification, calibrated candidate generation and
 	// dense-region upkeep, suppression, and the whole frame.

@@ -89,6 +89,11 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory, "detector buffers do not fit in memory");
 	}
+	if (cfg.staticRejection.enabled) {
+		st = static_.init(cfg.maxWidth, cfg.maxHeight, cfg.staticRejection);
+		if (!st.ok())
+			return st;
+	}
 	if (cfg.method == DetectionMethod::Calibrated)
 		return initCalibrated();
 	return Status::success();
@@ -279,6 +284,9 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	const auto tStart = Clock::now();
 
 	input_.begin(image);
+	if (config.staticRejection.enabled)
+		static_.observe(input_); // the frame's own pixels; its time counts as "other"
+	const auto tResize = Clock::now();
 	if (frameResize_ != 1.0) {
 		// The resampler reads a whole RGB8 image: other formats are converted first.
 		ptrdiff_t stride;
@@ -294,7 +302,7 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 					  resizeX_.data(), resizeY_.data(), resizeRow_.data());
 		input_.begin(ImageView::rgb8(resized_.data(), w1, h1));
 	}
-	stats.msResize = msSince(tStart);
+	stats.msResize = msSince(tResize);
 
 	const bool calibrated = config.method == DetectionMethod::Calibrated;
 	st = pyramid.build(input_, calibrated ? levelRows_ : nullptr);
@@ -346,6 +354,14 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 		stats.msCandidates += msSince(tUpdate);
 		stats.denseRegions = regions_.count();
 		stats.droppedRegions = regions_.dropped();
+	}
+	if (config.staticRejection.enabled) {
+		// After the dense regions took the detections: a region around static
+		// structure stays (its windows are found again anyway), only the output drops it.
+		const int before = kept;
+		kept = static_.reject(candidates_.data(), kept);
+		stats.staticRejected = before - kept;
+		static_.update();
 	}
 	stats.msNms = msSince(tNms);
 

@@ -10,6 +10,7 @@
 
 #include "detect/calibrated_plan.h"
 #include "detect/dense_regions.h"
+#include "detect/static_scene.h"
 #include "detect/classifier.h"
 #include "channels/frame_input.h"
 #include "kernels.h"
@@ -56,6 +57,8 @@ private:
 	std::vector<uint32_t> frameList_;
 	// Camera frame -> RGB8 rows (docs/pixel-formats.md).
 	FrameInput input_;
+	// Static-scene rejection (DetectorConfig::staticRejection), when enabled.
+	StaticScene static_;
 	// Input resampling ("resize"): the factor the frame itself is resized by (1 when
 	// the resize is done inside the pyramid, DetectorConfig::resizeInPyramid).
 	double frameResize_ = 1.0;

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSD-2-Clause
+#include "detect/static_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+
+namespace calped {
+
+Status StaticScene::init(int maxWidth, int maxHeight, const StaticRejection &settings)
+{
+	if (settings.difference < 1 || settings.difference > 254)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "static rejection: difference %d is outside 1..254 grey levels",
+				     settings.difference);
+	if (!(settings.minForeground >= 0.0f && settings.minForeground <= 1.0f))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "static rejection: minForeground %g is outside [0, 1]",
+				     double(settings.minForeground));
+	// The first frame is its own background: it cannot tell anything apart.
+	if (settings.warmupFrames < 1)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "static rejection: warmupFrames %d must be >= 1", settings.warmupFrames);
+	settings_ = settings;
+	try {
+		const size_t cells = size_t(maxWidth / 4 + 1) * size_t(maxHeight / 4 + 1);
+		current_.assign(cells, 0);
+		background_.assign(cells, 0);
+	} catch (const std::bad_alloc &) {
+		return Status::error(ErrorCode::OutOfMemory, "static rejection buffers");
+	}
+	cellsW_ = cellsH_ = 0;
+	frames_ = 0;
+	return Status::success();
+}
+
+void StaticScene::observe(FrameInput &input)
+{
+	const int w = input.width() / 4, h = input.height() / 4;
+	if (w != cellsW_ || h != cellsH_) {
+		cellsW_ = w;
+		cellsH_ = h;
+		frames_ = 0;
+	}
+	// Grey (R + 2G + B) / 4, averaged over each 4x4 cell: a sum of 64 weights.
+	for (int cy = 0; cy < h; cy++) {
+		ptrdiff_t stride;
+		const uint8_t *rows = input.rows(4 * cy, 4, stride);
+		uint8_t *out = current_.data() + size_t(cy) * w;
+		for (int cx = 0; cx < w; cx++) {
+			uint32_t sum = 0;
+			for (int dy = 0; dy < 4; dy++) {
+				const uint8_t *p = rows + dy * stride + 12 * cx;
+				for (int dx = 0; dx < 4; dx++, p += 3)
+					sum += p[0] + 2u * p[1] + p[2];
+			}
+			out[cx] = uint8_t(sum / 64);
+		}
+	}
+	if (frames_ == 0)
+		std::copy(current_.begin(), current_.begin() + size_t(w) * h, background_.begin());
+}
+
+float StaticScene::foreground(const Detection &box) const
+{
+	if (cellsW_ == 0 || cellsH_ == 0)
+		return 1.0f;
+	// The cells the box touches, clipped to the frame.
+	const int x0 = std::clamp(int(std::floor(box.x / 4)), 0, cellsW_ - 1);
+	const int x1 = std::clamp(int(std::floor((box.x + box.w) / 4)), 0, cellsW_ - 1);
+	const int y0 = std::clamp(int(std::floor(box.y / 4)), 0, cellsH_ - 1);
+	const int y1 = std::clamp(int(std::floor((box.y + box.h) / 4)), 0, cellsH_ - 1);
+	int differing = 0, total = 0;
+	for (int cy = y0; cy <= y1; cy++) {
+		const size_t row = size_t(cy) * cellsW_;
+		for (int cx = x0; cx <= x1; cx++) {
+			total++;
+			differing += std::abs(int(current_[row + cx]) - int(background_[row + cx])) >
+				     settings_.difference;
+		}
+	}
+	return float(differing) / float(total);
+}
+
+int StaticScene::reject(Detection *detections, int count)
+{
+	if (!ready())
+		return count;
+	int kept = 0;
+	for (int i = 0; i < count; i++)
+		if (foreground(detections[i]) >= settings_.minForeground)
+			detections[kept++] = detections[i];
+	return kept;
+}
+
+void StaticScene::update()
+{
+	const size_t n = size_t(cellsW_) * cellsH_;
+	for (size_t i = 0; i < n; i++)
+		background_[i] += current_[i] > background_[i] ? 1 : (current_[i] < background_[i] ? -1 : 0);
+	frames_++;
+}
+
+} // namespace calped

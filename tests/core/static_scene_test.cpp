@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Static-scene rejection on synthetic frames: a grey background with a bright block that
+// either stays put (static structure) or moves (a walker), and detections on the block.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "channels/frame_input.h"
+#include "detect/static_scene.h"
+
+namespace calped {
+namespace {
+
+constexpr int kW = 160, kH = 120;
+
+// Mid-grey frame with a 20x40 block of grey `level` whose top-left corner is (x, y).
+std::vector<uint8_t> frameWithBlock(int x, int y, uint8_t level)
+{
+	std::vector<uint8_t> rgb(size_t(kW) * kH * 3, 100);
+	for (int r = y; r < y + 40; r++)
+		for (int c = x; c < x + 20; c++)
+			for (int k = 0; k < 3; k++)
+				rgb[(size_t(r) * kW + c) * 3 + k] = level;
+	return rgb;
+}
+
+Detection boxAt(float x, float y)
+{
+	Detection d;
+	d.x = x;
+	d.y = y;
+	d.w = 20;
+	d.h = 40;
+	return d;
+}
+
+class StaticSceneTest : public ::testing::Test
+{
+protected:
+	void SetUp() override
+	{
+		ASSERT_TRUE(input_.init(kW, kH, false).ok());
+		settings_.enabled = true;
+		settings_.warmupFrames = 5;
+		ASSERT_TRUE(scene_.init(kW, kH, settings_).ok());
+	}
+
+	// One frame: observe, reject `box`, update. Returns whether the box survived.
+	bool frame(const std::vector<uint8_t> &rgb, Detection box, int width = kW, int height = kH)
+	{
+		input_.begin(ImageView::rgb8(rgb.data(), width, height));
+		scene_.observe(input_);
+		const int kept = scene_.reject(&box, 1);
+		scene_.update();
+		return kept == 1;
+	}
+
+	FrameInput input_;
+	StaticRejection settings_;
+	StaticScene scene_;
+};
+
+TEST_F(StaticSceneTest, StaticStructureIsDroppedOnceTheBackgroundIsTrusted)
+{
+	const std::vector<uint8_t> scene = frameWithBlock(60, 40, 200);
+	for (int k = 0; k < settings_.warmupFrames; k++)
+		EXPECT_TRUE(frame(scene, boxAt(60, 40))) << "dropped during warm-up, frame " << k;
+	ASSERT_TRUE(scene_.ready());
+	EXPECT_FALSE(frame(scene, boxAt(60, 40)));
+	EXPECT_FLOAT_EQ(scene_.foreground(boxAt(60, 40)), 0.0f);
+}
+
+TEST_F(StaticSceneTest, AWalkerIsKept)
+{
+	// The background is the empty square; then a block walks across it.
+	const std::vector<uint8_t> empty(size_t(kW) * kH * 3, 100);
+	for (int k = 0; k < settings_.warmupFrames; k++)
+		frame(empty, boxAt(0, 0));
+	for (int x = 0; x + 20 <= kW; x += 8) {
+		EXPECT_TRUE(frame(frameWithBlock(x, 40, 200), boxAt(float(x), 40))) << "x " << x;
+		EXPECT_GT(scene_.foreground(boxAt(float(x), 40)), 0.5f);
+	}
+	// A box on empty ground next to the walker is dropped.
+	EXPECT_FALSE(frame(frameWithBlock(0, 40, 200), boxAt(120, 60)));
+}
+
+TEST_F(StaticSceneTest, ASomeoneStandingStillFadesAtOneGreyLevelPerFrame)
+{
+	const std::vector<uint8_t> empty(size_t(kW) * kH * 3, 100);
+	for (int k = 0; k < settings_.warmupFrames; k++)
+		frame(empty, boxAt(0, 0));
+	// 40 grey levels above the ground: kept while the background is more than
+	// `difference` (10) away, i.e. for 30 frames, then dropped.
+	const std::vector<uint8_t> standing = frameWithBlock(60, 40, 140);
+	int keptFrames = 0;
+	while (keptFrames < 100 && frame(standing, boxAt(60, 40)))
+		keptFrames++;
+	EXPECT_EQ(keptFrames, 40 - settings_.difference);
+}
+
+TEST_F(StaticSceneTest, ANewFrameSizeStartsAgain)
+{
+	const std::vector<uint8_t> scene = frameWithBlock(60, 40, 200);
+	for (int k = 0; k < settings_.warmupFrames; k++)
+		frame(scene, boxAt(60, 40));
+	EXPECT_FALSE(frame(scene, boxAt(60, 40)));
+	// The same pixels read as a narrower frame: the background is new, warm-up again.
+	EXPECT_TRUE(frame(scene, boxAt(60, 40), kW - 40, kH));
+	EXPECT_FALSE(scene_.ready());
+}
+
+TEST(StaticSceneSettings, BadSettingsAreNamed)
+{
+	StaticScene scene;
+	StaticRejection s;
+	s.difference = 0;
+	Status st = scene.init(64, 64, s);
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("difference"), std::string::npos) << st.message();
+	s = StaticRejection();
+	s.minForeground = 1.5f;
+	st = scene.init(64, 64, s);
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("minForeground"), std::string::npos) << st.message();
+	s = StaticRejection();
+	s.warmupFrames = 0;
+	EXPECT_EQ(scene.init(64, 64, s).code(), ErrorCode::InvalidArgument);
+	EXPECT_TRUE(scene.init(64, 64, StaticRejection()).ok());
+}
+
+} // namespace
+} // namespace calped
