@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// RGB8 resampling (the input "resize") with AVX2 at any ratio, in 32-bit lanes with the
+// split sums of opt/resample_rgb8_split.h. Output rows are cut into groups of 32 samples
+// (eight quads); the last group of a row overlaps the one before it instead of leaving a
+// tail. Groups are planned a chunk at a time (on the stack), and each chunk is then run
+// down every output row. Bit-identical to ref/resample_ref.cpp; when a ratio cannot be
+// planned (shrinking by more than about 2.5x, or rows under 32 samples) the portable body
+// runs instead.
+#include <immintrin.h>
+
+#include "opt/resample_rgb8_body.h"
+#include "opt/resample_rgb8_split.h"
+
+namespace calped {
+namespace kernels {
+
+namespace {
+
+constexpr int kGroup = 32;       // output samples per group: four vectors of eight
+constexpr int kChunkGroups = 16; // groups planned at a time
+
+// One vector of a group: lane 0 holds quad k of the group, lane 1 quad k + 4, so that
+// two 32 -> 16 bit packs and one 16 -> 8 bit pack leave the 32 bytes in order.
+struct VectorPlan {
+	int32_t base[2];
+	alignas(32) uint8_t index[2][32];
+	alignas(32) int16_t weight[2][16];
+};
+
+struct GroupPlan {
+	int32_t start; // first output sample
+	VectorPlan v[4];
+};
+
+bool planGroup(const ResampleTap *xTaps, int start, int srcW3, GroupPlan &g)
+{
+	g.start = start;
+	for (int k = 0; k < 4; k++)
+		for (int lane = 0; lane < 2; lane++) {
+			QuadPlan q;
+			if (!planQuad(xTaps, start + 4 * (k + 4 * lane), srcW3, q))
+				return false;
+			VectorPlan &v = g.v[k];
+			v.base[lane] = q.base;
+			for (int step = 0; step < 2; step++) {
+				for (int b = 0; b < 16; b++)
+					v.index[step][16 * lane + b] = q.index[step][b];
+				for (int w = 0; w < 8; w++)
+					v.weight[step][8 * lane + w] = q.weight[step][w];
+			}
+		}
+	return true;
+}
+
+// Group starts: every 32 samples, the last one moved back to end at the row's end.
+inline int groupCount(int dstW3)
+{
+	return (dstW3 + kGroup - 1) / kGroup;
+}
+inline int groupStart(int g, int dstW3)
+{
+	return g * kGroup + kGroup <= dstW3 ? g * kGroup : dstW3 - kGroup;
+}
+
+// Row sums H = sum_x wx * p of one vector (eight samples) of one source row.
+template <int Steps>
+inline __m256i rowSums(const uint8_t *row, const VectorPlan &v)
+{
+	const __m256i bytes = _mm256_inserti128_si256(
+		_mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i *>(row + v.base[0]))),
+		_mm_loadu_si128(reinterpret_cast<const __m128i *>(row + v.base[1])), 1);
+	const __m256i *index = reinterpret_cast<const __m256i *>(v.index);
+	const __m256i *weight = reinterpret_cast<const __m256i *>(v.weight);
+	__m256i h = _mm256_madd_epi16(_mm256_shuffle_epi8(bytes, _mm256_load_si256(index)),
+				      _mm256_load_si256(weight));
+	if (Steps == 2)
+		h = _mm256_add_epi32(h, _mm256_madd_epi16(_mm256_shuffle_epi8(bytes, _mm256_load_si256(index + 1)),
+							  _mm256_load_si256(weight + 1)));
+	return h;
+}
+
+// Output samples of one vector: the column sums of the split row sums, rounded.
+template <int Steps>
+inline __m256i vectorOut(const uint8_t *r0, ptrdiff_t srcStride, const ResampleTap &ty,
+			 const VectorPlan &v)
+{
+	const __m256i loMask = _mm256_set1_epi32(0x3FFF3FFF);
+	__m256i a = _mm256_setzero_si256(), b = a;
+	for (int j = 0; j < ty.count; j += 2) {
+		// Two source rows at a time: (hi0, hi1) and (lo0, lo1) 16-bit pairs against
+		// (w0, w1); an odd last row pairs with itself at weight 0.
+		const bool pair = j + 1 < ty.count;
+		const __m256i h0 = rowSums<Steps>(r0 + j * srcStride, v);
+		const __m256i h1 = pair ? rowSums<Steps>(r0 + (j + 1) * srcStride, v) : h0;
+		const int32_t w = (ty.weight[j] & 0xFFFF) | (pair ? ty.weight[j + 1] << 16 : 0);
+		const __m256i wPair = _mm256_set1_epi32(w);
+		const __m256i hiPair = _mm256_blend_epi16(_mm256_srli_epi32(h0, 14), _mm256_slli_epi32(h1, 2), 0xAA);
+		const __m256i loPair = _mm256_and_si256(_mm256_blend_epi16(h0, _mm256_slli_epi32(h1, 16), 0xAA), loMask);
+		a = _mm256_add_epi32(a, _mm256_madd_epi16(hiPair, wPair));
+		b = _mm256_add_epi32(b, _mm256_madd_epi16(loPair, wPair));
+	}
+	// (A + ((B + 2^27 - 1) >> 14)) >> 14: exact halves round down.
+	b = _mm256_srli_epi32(_mm256_add_epi32(b, _mm256_set1_epi32((1 << 27) - 1)), 14);
+	return _mm256_srli_epi32(_mm256_add_epi32(a, b), 14);
+}
+
+template <int Steps>
+void runChunk(const uint8_t *src, ptrdiff_t srcStride, uint8_t *dst, ptrdiff_t dstStride,
+	      int dstHeight, const ResampleTap *yTaps, const GroupPlan *groups, int nGroups)
+{
+	for (int y = 0; y < dstHeight; y++) {
+		const ResampleTap &ty = yTaps[y];
+		const uint8_t *r0 = src + ty.first * srcStride;
+		uint8_t *out = dst + y * dstStride;
+		for (int g = 0; g < nGroups; g++) {
+			const GroupPlan &p = groups[g];
+			const __m256i o0 = vectorOut<Steps>(r0, srcStride, ty, p.v[0]);
+			const __m256i o1 = vectorOut<Steps>(r0, srcStride, ty, p.v[1]);
+			const __m256i o2 = vectorOut<Steps>(r0, srcStride, ty, p.v[2]);
+			const __m256i o3 = vectorOut<Steps>(r0, srcStride, ty, p.v[3]);
+			const __m256i bytes = _mm256_packus_epi16(_mm256_packs_epi32(o0, o1), _mm256_packs_epi32(o2, o3));
+			_mm256_storeu_si256(reinterpret_cast<__m256i *>(out + p.start), bytes);
+		}
+	}
+}
+
+} // namespace
+
+void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
+		       uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		       const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp)
+{
+	const int srcW3 = 3 * srcWidth, dstW3 = 3 * dstWidth;
+	bool planned = dstW3 >= kGroup && splitSumsFit(xTaps, dstWidth, kSplitMaxXTaps) &&
+		       splitSumsFit(yTaps, dstHeight, kMaxTaps);
+	// Every group must plan before any output is written.
+	const int nGroups = planned ? groupCount(dstW3) : 0;
+	GroupPlan chunk[kChunkGroups];
+	for (int g = 0; g < nGroups && planned; g++)
+		planned = planGroup(xTaps, groupStart(g, dstW3), srcW3, chunk[0]);
+	if (!planned) {
+		resampleRgb8Body(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth,
+				 dstHeight, xTaps, yTaps, rowTmp);
+		return;
+	}
+	const int steps = splitSteps(xTaps, dstWidth);
+	for (int g0 = 0; g0 < nGroups; g0 += kChunkGroups) {
+		const int n = nGroups - g0 < kChunkGroups ? nGroups - g0 : kChunkGroups;
+		for (int g = 0; g < n; g++)
+			planGroup(xTaps, groupStart(g0 + g, dstW3), srcW3, chunk[g]);
+		if (steps == 1)
+			runChunk<1>(src, srcStride, dst, dstStride, dstHeight, yTaps, chunk, n);
+		else
+			runChunk<2>(src, srcStride, dst, dstStride, dstHeight, yTaps, chunk, n);
+	}
+}
+
+} // namespace kernels
+} // namespace calped
