@@ -90,22 +90,6 @@ inline bool planQuad(const ResampleTap *xTaps, int s0, int srcW3, QuadPlan &p)
 	return true;
 }
 
-// One output sample exactly as the reference computes it (for rows too short to plan).
-inline uint8_t resampleSample(const uint8_t *src, ptrdiff_t srcStride, const ResampleTap &tx,
-			      const ResampleTap &ty, int c)
-{
-	int64_t acc = 0;
-	for (int i = 0; i < ty.count; i++) {
-		const uint8_t *row = src + (ty.first + i) * srcStride + c;
-		int64_t h = 0;
-		for (int j = 0; j < tx.count; j++)
-			h += int64_t(tx.weight[j]) * row[3 * (tx.first + j)];
-		acc += ty.weight[i] * h;
-	}
-	const int64_t v = (acc + (int64_t(1) << 27) - 1) >> 28;
-	return static_cast<uint8_t>(v < 0 ? 0 : (v > 255 ? 255 : v));
-}
-
 } // namespace
 } // namespace kernels
 } // namespace calped

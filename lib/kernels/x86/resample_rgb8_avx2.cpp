@@ -79,29 +79,57 @@ inline __m256i rowSums(const uint8_t *row, const VectorPlan &v)
 	return h;
 }
 
-// Output samples of one vector: the column sums of the split row sums, rounded.
-template <int Steps>
-inline __m256i vectorOut(const uint8_t *r0, ptrdiff_t srcStride, const ResampleTap &ty,
-			 const VectorPlan &v)
+// Column sums of two source rows' split row sums: (hi0, hi1) and (lo0, lo1) as 16-bit
+// pairs against the pair of weights (w0, w1).
+inline void addRowPair(__m256i h0, __m256i h1, __m256i wPair, __m256i &a, __m256i &b)
 {
-	const __m256i loMask = _mm256_set1_epi32(0x3FFF3FFF);
-	__m256i a = _mm256_setzero_si256(), b = a;
-	for (int j = 0; j < ty.count; j += 2) {
-		// Two source rows at a time: (hi0, hi1) and (lo0, lo1) 16-bit pairs against
-		// (w0, w1); an odd last row pairs with itself at weight 0.
-		const bool pair = j + 1 < ty.count;
-		const __m256i h0 = rowSums<Steps>(r0 + j * srcStride, v);
-		const __m256i h1 = pair ? rowSums<Steps>(r0 + (j + 1) * srcStride, v) : h0;
-		const int32_t w = (ty.weight[j] & 0xFFFF) | (pair ? ty.weight[j + 1] << 16 : 0);
-		const __m256i wPair = _mm256_set1_epi32(w);
-		const __m256i hiPair = _mm256_blend_epi16(_mm256_srli_epi32(h0, 14), _mm256_slli_epi32(h1, 2), 0xAA);
-		const __m256i loPair = _mm256_and_si256(_mm256_blend_epi16(h0, _mm256_slli_epi32(h1, 16), 0xAA), loMask);
-		a = _mm256_add_epi32(a, _mm256_madd_epi16(hiPair, wPair));
-		b = _mm256_add_epi32(b, _mm256_madd_epi16(loPair, wPair));
-	}
-	// (A + ((B + 2^27 - 1) >> 14)) >> 14: exact halves round down.
+	const __m256i hiPair = _mm256_blend_epi16(_mm256_srli_epi32(h0, 14), _mm256_slli_epi32(h1, 2), 0xAA);
+	const __m256i loPair = _mm256_and_si256(_mm256_blend_epi16(h0, _mm256_slli_epi32(h1, 16), 0xAA),
+						_mm256_set1_epi32(0x3FFF3FFF));
+	a = _mm256_add_epi32(a, _mm256_madd_epi16(hiPair, wPair));
+	b = _mm256_add_epi32(b, _mm256_madd_epi16(loPair, wPair));
+}
+
+// (A + ((B + 2^27 - 1) >> 14)) >> 14: exact halves round down.
+inline __m256i roundSplit(__m256i a, __m256i b)
+{
 	b = _mm256_srli_epi32(_mm256_add_epi32(b, _mm256_set1_epi32((1 << 27) - 1)), 14);
 	return _mm256_srli_epi32(_mm256_add_epi32(a, b), 14);
+}
+
+// Weights j and j + 1 of a tap as one 32-bit lane (0 past the last).
+inline int32_t weightPair(const ResampleTap &t, int j)
+{
+	return (t.weight[j] & 0xFFFF) | (j + 1 < t.count ? t.weight[j + 1] << 16 : 0);
+}
+
+// Output rows of at most two source rows (every enlarging row): r1 is r0 again, at weight
+// 0, when there is one.
+template <int Steps>
+inline __m256i vectorOutTwo(const uint8_t *r0, const uint8_t *r1, __m256i wPair, const VectorPlan &v)
+{
+	__m256i a = _mm256_setzero_si256(), b = a;
+	addRowPair(rowSums<Steps>(r0, v), rowSums<Steps>(r1, v), wPair, a, b);
+	return roundSplit(a, b);
+}
+
+template <int Steps>
+inline __m256i vectorOutMany(const uint8_t *r0, ptrdiff_t srcStride, const ResampleTap &ty,
+			     const VectorPlan &v)
+{
+	__m256i a = _mm256_setzero_si256(), b = a;
+	for (int j = 0; j < ty.count; j += 2) {
+		const __m256i h0 = rowSums<Steps>(r0 + j * srcStride, v);
+		const __m256i h1 = j + 1 < ty.count ? rowSums<Steps>(r0 + (j + 1) * srcStride, v) : h0;
+		addRowPair(h0, h1, _mm256_set1_epi32(weightPair(ty, j)), a, b);
+	}
+	return roundSplit(a, b);
+}
+
+inline void storeGroup(uint8_t *out, __m256i o0, __m256i o1, __m256i o2, __m256i o3)
+{
+	const __m256i bytes = _mm256_packus_epi16(_mm256_packs_epi32(o0, o1), _mm256_packs_epi32(o2, o3));
+	_mm256_storeu_si256(reinterpret_cast<__m256i *>(out), bytes);
 }
 
 template <int Steps>
@@ -112,14 +140,23 @@ void runChunk(const uint8_t *src, ptrdiff_t srcStride, uint8_t *dst, ptrdiff_t d
 		const ResampleTap &ty = yTaps[y];
 		const uint8_t *r0 = src + ty.first * srcStride;
 		uint8_t *out = dst + y * dstStride;
+		if (ty.count <= 2) {
+			const uint8_t *r1 = ty.count == 2 ? r0 + srcStride : r0;
+			const __m256i w = _mm256_set1_epi32(weightPair(ty, 0));
+			for (int g = 0; g < nGroups; g++) {
+				const GroupPlan &p = groups[g];
+				storeGroup(out + p.start, vectorOutTwo<Steps>(r0, r1, w, p.v[0]),
+					   vectorOutTwo<Steps>(r0, r1, w, p.v[1]), vectorOutTwo<Steps>(r0, r1, w, p.v[2]),
+					   vectorOutTwo<Steps>(r0, r1, w, p.v[3]));
+			}
+			continue;
+		}
 		for (int g = 0; g < nGroups; g++) {
 			const GroupPlan &p = groups[g];
-			const __m256i o0 = vectorOut<Steps>(r0, srcStride, ty, p.v[0]);
-			const __m256i o1 = vectorOut<Steps>(r0, srcStride, ty, p.v[1]);
-			const __m256i o2 = vectorOut<Steps>(r0, srcStride, ty, p.v[2]);
-			const __m256i o3 = vectorOut<Steps>(r0, srcStride, ty, p.v[3]);
-			const __m256i bytes = _mm256_packus_epi16(_mm256_packs_epi32(o0, o1), _mm256_packs_epi32(o2, o3));
-			_mm256_storeu_si256(reinterpret_cast<__m256i *>(out + p.start), bytes);
+			storeGroup(out + p.start, vectorOutMany<Steps>(r0, srcStride, ty, p.v[0]),
+				   vectorOutMany<Steps>(r0, srcStride, ty, p.v[1]),
+				   vectorOutMany<Steps>(r0, srcStride, ty, p.v[2]),
+				   vectorOutMany<Steps>(r0, srcStride, ty, p.v[3]));
 		}
 	}
 }
