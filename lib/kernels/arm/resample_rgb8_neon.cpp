@@ -4,11 +4,17 @@
 // a, b gives the outputs (3a + b) / 4 and (a + 3b) / 4, eight pairs of pixels at a time
 // with de-interleaving loads and an interleaving store. Weights are divided by their
 // common power of two as in the portable body (opt/resample_rgb8_body.h), so the sums
-// fit 32 bits; bit-identical to ref/resample_ref.cpp. Other ratios use the portable
-// kernel.
+// fit 32 bits. Other ratios take the split sums of opt/resample_rgb8_split.h, four
+// output samples (a quad) per vector: the quad's 16 source bytes of a row are loaded once,
+// its taps' samples picked by a table lookup, multiplied by their weights into row sums,
+// and the rows' split sums combined. Bit-identical to ref/resample_ref.cpp; ratios that
+// cannot be planned (shrinking by more than about 2.5x, rows under 16 samples) use the
+// portable kernel.
 #include <arm_neon.h>
 
+#include "arm/neon_util.h"
 #include "opt/resample_rgb8_body.h"
+#include "opt/resample_rgb8_split.h"
 
 namespace calped {
 namespace kernels {
@@ -47,6 +53,171 @@ inline uint8x8_t toByte(int32x4_t lo, int32x4_t hi, int32x4_t bias, int32x4_t ri
 	return vqmovn_u16(vcombine_u16(vqmovun_s32(lo), vqmovun_s32(hi)));
 }
 
+
+// ---- any ratio: split sums over quads --------------------------------------------------
+constexpr int kGroup = 16;       // output samples per group: four quads
+constexpr int kChunkGroups = 32; // groups planned at a time
+
+// A quad with its pairs laid out for widening multiplies: bytes of the samples' first
+// taps in the low half of each lookup, second taps in the high half.
+struct NeonQuad {
+	int32_t base;
+	uint8_t index[2][16];
+	uint16_t weight[2][8]; // per step: w first x 4, w second x 4
+};
+
+struct NeonGroup {
+	int32_t start; // first output sample
+	NeonQuad q[4];
+};
+
+bool planNeonGroup(const ResampleTap *xTaps, int start, int srcW3, NeonGroup &g)
+{
+	g.start = start;
+	for (int k = 0; k < 4; k++) {
+		QuadPlan p;
+		if (!planQuad(xTaps, start + 4 * k, srcW3, p))
+			return false;
+		NeonQuad &q = g.q[k];
+		q.base = p.base;
+		for (int step = 0; step < 2; step++)
+			for (int s = 0; s < 4; s++)
+				for (int half = 0; half < 2; half++) {
+					q.index[step][8 * half + 2 * s] = p.index[step][4 * s + 2 * half];
+					q.index[step][8 * half + 2 * s + 1] = kZeroByte;
+					q.weight[step][4 * half + s] = uint16_t(p.weight[step][2 * s + half]);
+				}
+	}
+	return true;
+}
+
+inline int groupStart(int g, int dstW3)
+{
+	return g * kGroup + kGroup <= dstW3 ? g * kGroup : dstW3 - kGroup;
+}
+
+// Sixteen bytes picked from the 16 of `table`; indices of 16 or more give 0.
+CALPED_NEON_INLINE uint16x8_t lookupPairs(uint8x16_t table, const uint8_t *index)
+{
+	const uint8x16_t i = vld1q_u8(index);
+#if defined(__aarch64__)
+	return vreinterpretq_u16_u8(vqtbl1q_u8(table, i));
+#else
+	const uint8x8x2_t t = { { vget_low_u8(table), vget_high_u8(table) } };
+	return vreinterpretq_u16_u8(vcombine_u8(vtbl2_u8(t, vget_low_u8(i)), vtbl2_u8(t, vget_high_u8(i))));
+#endif
+}
+
+// Row sums H = sum_x wx * p of one quad of one source row.
+template <int Steps>
+CALPED_NEON_INLINE uint32x4_t rowSums(const uint8_t *row, const NeonQuad &q)
+{
+	const uint8x16_t bytes = vld1q_u8(row + q.base);
+	uint32x4_t h = vdupq_n_u32(0);
+	for (int step = 0; step < Steps; step++) {
+		const uint16x8_t p = lookupPairs(bytes, q.index[step]);
+		const uint16x8_t w = vld1q_u16(q.weight[step]);
+		h = vmlal_u16(h, vget_low_u16(p), vget_low_u16(w));
+		h = vmlal_u16(h, vget_high_u16(p), vget_high_u16(w));
+	}
+	return h;
+}
+
+// Adds one source row's split row sums at weight w to the column sums a (high parts) and
+// b (low 14 bits).
+CALPED_NEON_INLINE void addRow(uint32x4_t h, uint32_t w, uint32x4_t &a, uint32x4_t &b)
+{
+	a = vmlaq_n_u32(a, vshrq_n_u32(h, 14), w);
+	b = vmlaq_n_u32(b, vandq_u32(h, vdupq_n_u32(0x3FFF)), w);
+}
+
+// (A + ((B + 2^27 - 1) >> 14)) >> 14 as 16-bit lanes: exact halves round down.
+CALPED_NEON_INLINE uint16x4_t roundSplit(uint32x4_t a, uint32x4_t b)
+{
+	return vshrn_n_u32(vsraq_n_u32(a, vaddq_u32(b, vdupq_n_u32((1u << 27) - 1)), 14), 14);
+}
+
+template <int Steps>
+CALPED_NEON_INLINE uint16x4_t quadOut(const uint8_t *r0, ptrdiff_t srcStride, const ResampleTap &ty,
+				      const NeonQuad &q)
+{
+	uint32x4_t a = vdupq_n_u32(0), b = a;
+	for (int j = 0; j < ty.count; j++)
+		addRow(rowSums<Steps>(r0 + j * srcStride, q), uint32_t(ty.weight[j]), a, b);
+	return roundSplit(a, b);
+}
+
+// At most two source rows (every enlarging row): the common case without the loop.
+template <int Steps>
+CALPED_NEON_INLINE uint16x4_t quadOutTwo(const uint8_t *r0, const uint8_t *r1, uint32_t w0,
+					 uint32_t w1, const NeonQuad &q)
+{
+	uint32x4_t a = vdupq_n_u32(0), b = a;
+	addRow(rowSums<Steps>(r0, q), w0, a, b);
+	addRow(rowSums<Steps>(r1, q), w1, a, b);
+	return roundSplit(a, b);
+}
+
+template <int Steps>
+void runChunk(const uint8_t *src, ptrdiff_t srcStride, uint8_t *dst, ptrdiff_t dstStride,
+	      int dstHeight, const ResampleTap *yTaps, const NeonGroup *groups, int nGroups)
+{
+	for (int y = 0; y < dstHeight; y++) {
+		const ResampleTap &ty = yTaps[y];
+		const uint8_t *r0 = src + ty.first * srcStride;
+		uint8_t *out = dst + y * dstStride;
+		if (ty.count <= 2) {
+			const uint8_t *r1 = ty.count == 2 ? r0 + srcStride : r0;
+			const uint32_t w0 = uint32_t(ty.weight[0]), w1 = ty.count == 2 ? uint32_t(ty.weight[1]) : 0;
+			for (int g = 0; g < nGroups; g++) {
+				const NeonGroup &p = groups[g];
+				const uint16x8_t lo = vcombine_u16(quadOutTwo<Steps>(r0, r1, w0, w1, p.q[0]),
+								   quadOutTwo<Steps>(r0, r1, w0, w1, p.q[1]));
+				const uint16x8_t hi = vcombine_u16(quadOutTwo<Steps>(r0, r1, w0, w1, p.q[2]),
+								   quadOutTwo<Steps>(r0, r1, w0, w1, p.q[3]));
+				vst1q_u8(out + p.start, vcombine_u8(vqmovn_u16(lo), vqmovn_u16(hi)));
+			}
+			continue;
+		}
+		for (int g = 0; g < nGroups; g++) {
+			const NeonGroup &p = groups[g];
+			const uint16x8_t lo = vcombine_u16(quadOut<Steps>(r0, srcStride, ty, p.q[0]),
+							   quadOut<Steps>(r0, srcStride, ty, p.q[1]));
+			const uint16x8_t hi = vcombine_u16(quadOut<Steps>(r0, srcStride, ty, p.q[2]),
+							   quadOut<Steps>(r0, srcStride, ty, p.q[3]));
+			vst1q_u8(out + p.start, vcombine_u8(vqmovn_u16(lo), vqmovn_u16(hi)));
+		}
+	}
+}
+
+// Resamples with the split sums; false, with nothing written, when the taps cannot be
+// planned.
+bool resampleAnyRatio(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, uint8_t *dst,
+		      ptrdiff_t dstStride, int dstWidth, int dstHeight, const ResampleTap *xTaps,
+		      const ResampleTap *yTaps)
+{
+	const int srcW3 = 3 * srcWidth, dstW3 = 3 * dstWidth;
+	if (dstW3 < kGroup || !splitSumsFit(xTaps, dstWidth, kSplitMaxXTaps) ||
+	    !splitSumsFit(yTaps, dstHeight, kMaxTaps))
+		return false;
+	const int nGroups = (dstW3 + kGroup - 1) / kGroup;
+	NeonGroup chunk[kChunkGroups];
+	for (int g = 0; g < nGroups; g++)
+		if (!planNeonGroup(xTaps, groupStart(g, dstW3), srcW3, chunk[0]))
+			return false;
+	const int steps = splitSteps(xTaps, dstWidth);
+	for (int g0 = 0; g0 < nGroups; g0 += kChunkGroups) {
+		const int n = nGroups - g0 < kChunkGroups ? nGroups - g0 : kChunkGroups;
+		for (int g = 0; g < n; g++)
+			planNeonGroup(xTaps, groupStart(g0 + g, dstW3), srcW3, chunk[g]);
+		if (steps == 1)
+			runChunk<1>(src, srcStride, dst, dstStride, dstHeight, yTaps, chunk, n);
+		else
+			runChunk<2>(src, srcStride, dst, dstStride, dstHeight, yTaps, chunk, n);
+	}
+	return true;
+}
+
 } // namespace
 
 void resampleRgb8_neon(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
@@ -58,6 +229,9 @@ void resampleRgb8_neon(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, in
 	const int sx = std::min(commonWeightShift(xTaps, dstWidth), 27 - sy);
 	const int shift = 28 - sx - sy;
 	if (shift > 22 || !isDoubling(xTaps, srcWidth, dstWidth)) {
+		if (resampleAnyRatio(src, srcStride, srcWidth, dst, dstStride, dstWidth, dstHeight, xTaps,
+				     yTaps))
+			return;
 		resampleRgb8_opt(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth,
 				 dstHeight, xTaps, yTaps, rowTmp);
 		return;
