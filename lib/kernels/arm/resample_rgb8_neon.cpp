@@ -55,8 +55,15 @@ inline uint8x8_t toByte(int32x4_t lo, int32x4_t hi, int32x4_t bias, int32x4_t ri
 
 
 // ---- any ratio: split sums over quads --------------------------------------------------
-constexpr int kGroup = 16;       // output samples per group: four quads
-constexpr int kChunkGroups = 32; // groups planned at a time
+// Output samples per group: four quads and one 16-byte store on aarch64, two quads and an
+// 8-byte store on armv7 (whose sixteen registers spill with four).
+#if defined(__aarch64__)
+constexpr int kGroupQuads = 4;
+#else
+constexpr int kGroupQuads = 2;
+#endif
+constexpr int kGroup = 4 * kGroupQuads;
+constexpr int kChunkGroups = 64; // groups planned at a time
 
 // A quad with its pairs laid out for widening multiplies: bytes of the samples' first
 // taps in the low half of each lookup, second taps in the high half.
@@ -68,13 +75,13 @@ struct NeonQuad {
 
 struct NeonGroup {
 	int32_t start; // first output sample
-	NeonQuad q[4];
+	NeonQuad q[kGroupQuads];
 };
 
 bool planNeonGroup(const ResampleTap *xTaps, int start, int srcW3, NeonGroup &g)
 {
 	g.start = start;
-	for (int k = 0; k < 4; k++) {
+	for (int k = 0; k < kGroupQuads; k++) {
 		QuadPlan p;
 		if (!planQuad(xTaps, start + 4 * k, srcW3, p))
 			return false;
@@ -113,22 +120,27 @@ template <int Steps>
 CALPED_NEON_INLINE uint32x4_t rowSums(const uint8_t *row, const NeonQuad &q)
 {
 	const uint8x16_t bytes = vld1q_u8(row + q.base);
-	uint32x4_t h = vdupq_n_u32(0);
-	for (int step = 0; step < Steps; step++) {
-		const uint16x8_t p = lookupPairs(bytes, q.index[step]);
-		const uint16x8_t w = vld1q_u16(q.weight[step]);
-		h = vmlal_u16(h, vget_low_u16(p), vget_low_u16(w));
-		h = vmlal_u16(h, vget_high_u16(p), vget_high_u16(w));
+	const uint16x8_t p = lookupPairs(bytes, q.index[0]);
+	const uint16x8_t w = vld1q_u16(q.weight[0]);
+	uint32x4_t h = vmull_u16(vget_low_u16(p), vget_low_u16(w));
+	h = vmlal_u16(h, vget_high_u16(p), vget_high_u16(w));
+	if (Steps == 2) {
+		const uint16x8_t p2 = lookupPairs(bytes, q.index[1]);
+		const uint16x8_t w2 = vld1q_u16(q.weight[1]);
+		h = vmlal_u16(h, vget_low_u16(p2), vget_low_u16(w2));
+		h = vmlal_u16(h, vget_high_u16(p2), vget_high_u16(w2));
 	}
 	return h;
 }
 
-// Adds one source row's split row sums at weight w to the column sums a (high parts) and
-// b (low 14 bits).
-CALPED_NEON_INLINE void addRow(uint32x4_t h, uint32_t w, uint32x4_t &a, uint32x4_t &b)
+// The split of row sums H < 2^22: H >> 14 and H & 0x3FFF as 16-bit lanes.
+CALPED_NEON_INLINE uint16x4_t highPart(uint32x4_t h)
 {
-	a = vmlaq_n_u32(a, vshrq_n_u32(h, 14), w);
-	b = vmlaq_n_u32(b, vandq_u32(h, vdupq_n_u32(0x3FFF)), w);
+	return vshrn_n_u32(h, 14);
+}
+CALPED_NEON_INLINE uint16x4_t lowPart(uint32x4_t h)
+{
+	return vand_u16(vmovn_u32(h), vdup_n_u16(0x3FFF));
 }
 
 // (A + ((B + 2^27 - 1) >> 14)) >> 14 as 16-bit lanes: exact halves round down.
@@ -142,20 +154,36 @@ CALPED_NEON_INLINE uint16x4_t quadOut(const uint8_t *r0, ptrdiff_t srcStride, co
 				      const NeonQuad &q)
 {
 	uint32x4_t a = vdupq_n_u32(0), b = a;
-	for (int j = 0; j < ty.count; j++)
-		addRow(rowSums<Steps>(r0 + j * srcStride, q), uint32_t(ty.weight[j]), a, b);
+	for (int j = 0; j < ty.count; j++) {
+		const uint32x4_t h = rowSums<Steps>(r0 + j * srcStride, q);
+		const uint16_t w = uint16_t(ty.weight[j]);
+		a = vmlal_n_u16(a, highPart(h), w);
+		b = vmlal_n_u16(b, lowPart(h), w);
+	}
 	return roundSplit(a, b);
 }
 
 // At most two source rows (every enlarging row): the common case without the loop.
 template <int Steps>
-CALPED_NEON_INLINE uint16x4_t quadOutTwo(const uint8_t *r0, const uint8_t *r1, uint32_t w0,
-					 uint32_t w1, const NeonQuad &q)
+CALPED_NEON_INLINE uint16x4_t quadOutTwo(const uint8_t *r0, const uint8_t *r1, uint32x4_t w0,
+					 uint32x4_t w1, const NeonQuad &q)
 {
-	uint32x4_t a = vdupq_n_u32(0), b = a;
-	addRow(rowSums<Steps>(r0, q), w0, a, b);
-	addRow(rowSums<Steps>(r1, q), w1, a, b);
+	const uint32x4_t h0 = rowSums<Steps>(r0, q), h1 = rowSums<Steps>(r1, q);
+	const uint32x4_t low = vdupq_n_u32(0x3FFF);
+	const uint32x4_t a = vmlaq_u32(vmulq_u32(vshrq_n_u32(h0, 14), w0), vshrq_n_u32(h1, 14), w1);
+	const uint32x4_t b = vmlaq_u32(vmulq_u32(vandq_u32(h0, low), w0), vandq_u32(h1, low), w1);
 	return roundSplit(a, b);
+}
+
+// Stores the quads quad(0), quad(1)... of a group as bytes.
+template <typename QuadFn>
+CALPED_NEON_INLINE void storeGroup(uint8_t *out, QuadFn quad)
+{
+	const uint8x8_t lo = vqmovn_u16(vcombine_u16(quad(0), quad(1)));
+	if constexpr (kGroupQuads == 4)
+		vst1q_u8(out, vcombine_u8(lo, vqmovn_u16(vcombine_u16(quad(2), quad(3)))));
+	else
+		vst1_u8(out, lo);
 }
 
 template <int Steps>
@@ -168,24 +196,17 @@ void runChunk(const uint8_t *src, ptrdiff_t srcStride, uint8_t *dst, ptrdiff_t d
 		uint8_t *out = dst + y * dstStride;
 		if (ty.count <= 2) {
 			const uint8_t *r1 = ty.count == 2 ? r0 + srcStride : r0;
-			const uint32_t w0 = uint32_t(ty.weight[0]), w1 = ty.count == 2 ? uint32_t(ty.weight[1]) : 0;
+			const uint32x4_t w0 = vdupq_n_u32(uint32_t(ty.weight[0]));
+			const uint32x4_t w1 = vdupq_n_u32(uint32_t(ty.count == 2 ? ty.weight[1] : 0));
 			for (int g = 0; g < nGroups; g++) {
 				const NeonGroup &p = groups[g];
-				const uint16x8_t lo = vcombine_u16(quadOutTwo<Steps>(r0, r1, w0, w1, p.q[0]),
-								   quadOutTwo<Steps>(r0, r1, w0, w1, p.q[1]));
-				const uint16x8_t hi = vcombine_u16(quadOutTwo<Steps>(r0, r1, w0, w1, p.q[2]),
-								   quadOutTwo<Steps>(r0, r1, w0, w1, p.q[3]));
-				vst1q_u8(out + p.start, vcombine_u8(vqmovn_u16(lo), vqmovn_u16(hi)));
+				storeGroup(out + p.start, [&](int k) { return quadOutTwo<Steps>(r0, r1, w0, w1, p.q[k]); });
 			}
 			continue;
 		}
 		for (int g = 0; g < nGroups; g++) {
 			const NeonGroup &p = groups[g];
-			const uint16x8_t lo = vcombine_u16(quadOut<Steps>(r0, srcStride, ty, p.q[0]),
-							   quadOut<Steps>(r0, srcStride, ty, p.q[1]));
-			const uint16x8_t hi = vcombine_u16(quadOut<Steps>(r0, srcStride, ty, p.q[2]),
-							   quadOut<Steps>(r0, srcStride, ty, p.q[3]));
-			vst1q_u8(out + p.start, vcombine_u8(vqmovn_u16(lo), vqmovn_u16(hi)));
+			storeGroup(out + p.start, [&](int k) { return quadOut<Steps>(r0, srcStride, ty, p.q[k]); });
 		}
 	}
 }
