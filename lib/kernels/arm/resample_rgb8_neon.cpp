@@ -63,7 +63,7 @@ constexpr int kGroupQuads = 4;
 constexpr int kGroupQuads = 2;
 #endif
 constexpr int kGroup = 4 * kGroupQuads;
-constexpr int kChunkGroups = 64; // groups planned at a time
+constexpr int kChunkGroups = 512 / kGroup; // groups planned at a time (about 9 KB of stack)
 
 // A quad with its pairs laid out for widening multiplies: bytes of the samples' first
 // taps in the low half of each lookup, second taps in the high half.
