@@ -11,8 +11,9 @@
 // (floor(floor(x / a) / b) = floor(x / (a b))), all in 32 bits and exact.
 //
 // A "quad" is four consecutive output samples (interleaved RGB, so 4/3 of a pixel): all
-// the source bytes its taps read lie within 16 bytes of one row, loaded once and picked by
-// a byte shuffle into (first, second) pairs of 16-bit samples beside pairs of weights.
+// the source bytes its taps read lie within a window of 16 bytes of one row (32 when
+// shrinking by more than about 2.5x), loaded once and picked by a byte shuffle or table
+// lookup into (first, second) pairs of 16-bit samples beside pairs of weights.
 #pragma once
 
 #include <cstdint>
@@ -23,8 +24,15 @@ namespace calped {
 namespace kernels {
 namespace {
 
-constexpr int kSplitMaxXTaps = 4; // two pair steps of the horizontal multiply-add
+constexpr int kSplitMaxSteps = 3; // pair steps of the horizontal multiply-add
+constexpr int kSplitNarrow = 16, kSplitWide = 32; // window bytes
 constexpr uint8_t kZeroByte = 0x80; // a shuffle index that yields 0
+
+// Taps per output sample a window can serve: two pair steps in 16 bytes, three in 32.
+inline int splitMaxXTaps(int window)
+{
+	return window == kSplitNarrow ? 4 : 2 * kSplitMaxSteps;
+}
 
 // Whether every tap has 1..maxCount weights in [0, 2^14] summing to at most 2^14: then
 // the split sums above cannot overflow.
@@ -46,24 +54,25 @@ inline bool splitSumsFit(const ResampleTap *taps, int n, int maxCount)
 	return true;
 }
 
-// Pair steps the horizontal multiply-add needs: 1 for at most two taps, else 2.
+// Pair steps the horizontal multiply-add needs: half the most taps, rounded up.
 inline int splitSteps(const ResampleTap *xTaps, int dstWidth)
 {
+	int most = 1;
 	for (int x = 0; x < dstWidth; x++)
-		if (xTaps[x].count > 2)
-			return 2;
-	return 1;
+		most = most > xTaps[x].count ? most : xTaps[x].count;
+	return (most + 1) / 2;
 }
 
 struct QuadPlan {
-	int32_t base;              // first source byte of the 16 loaded
-	uint8_t index[2][16];      // per pair step: bytes (first, 0, second, 0) per sample
-	int16_t weight[2][8];      // per pair step: (w first, w second) per sample
+	int32_t base;                       // first source byte of the window
+	uint8_t index[kSplitMaxSteps][16];  // per pair step: bytes (first, 0, second, 0) per sample
+	int16_t weight[kSplitMaxSteps][8];  // per pair step: (w first, w second) per sample
 };
 
-// Plans output samples s0..s0+3 of a row (s0 + 4 <= 3 * dstWidth). Fails when their taps
-// span more than 16 bytes or the row has fewer than 16.
-inline bool planQuad(const ResampleTap *xTaps, int s0, int srcW3, QuadPlan &p)
+// Plans output samples s0..s0+3 of a row (s0 + 4 <= 3 * dstWidth) for a window of
+// `window` bytes (indices below it, or kZeroByte). Fails when their taps span more, or
+// the row is shorter than the window.
+inline bool planQuad(const ResampleTap *xTaps, int s0, int srcW3, int window, QuadPlan &p)
 {
 	int lo = srcW3, hi = -1;
 	for (int k = 0; k < 4; k++) {
@@ -72,13 +81,13 @@ inline bool planQuad(const ResampleTap *xTaps, int s0, int srcW3, QuadPlan &p)
 		lo = lo < 3 * t.first + c ? lo : 3 * t.first + c;
 		hi = hi > 3 * (t.first + t.count - 1) + c ? hi : 3 * (t.first + t.count - 1) + c;
 	}
-	if (hi - lo >= 16 || srcW3 < 16)
+	if (hi - lo >= window || srcW3 < window)
 		return false;
-	p.base = lo < srcW3 - 16 ? lo : srcW3 - 16;
+	p.base = lo < srcW3 - window ? lo : srcW3 - window;
 	for (int k = 0; k < 4; k++) {
 		const int x = (s0 + k) / 3, c = (s0 + k) % 3;
 		const ResampleTap &t = xTaps[x];
-		for (int step = 0; step < 2; step++)
+		for (int step = 0; step < kSplitMaxSteps; step++)
 			for (int half = 0; half < 2; half++) {
 				const int j = 2 * step + half;
 				const bool used = j < t.count;
