@@ -208,7 +208,8 @@ uint64_t scanTreesList_ref(const uint16_t *chns, ptrdiff_t rowStride, const uint
 			   size_t count, int step, const TreeNode *nodes, int nTrees,
 			   int nodesPerTree, int32_t cascThr, WindowHit *hits, uint64_t capacity);
 
-// AVX2 builds of the portable optimised kernels (x86/portable_avx2.cpp).
+// AVX2 builds of the portable optimised kernels (x86/portable_avx2.cpp), and RGB8
+// resampling at any ratio in 32-bit lanes (x86/resample_rgb8_avx2.cpp).
 void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
 		       uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 		       const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp);

@@ -68,8 +68,9 @@ TEST(BoundedMemory, CountingAllocatorSeesAllocations)
 TEST(BoundedMemory, DetectAllocatesNothingSynthetic)
 {
 	const Model model = test::randomModel(7, 512);
-	// Resizes of the frame, then resizes inside the pyramid (negative here).
-	for (double resize : { 1.0, 2.0, -2.0, -2.5 }) {
+	// Resizes of the frame (2.5: a ratio other than 2, a separate SIMD path), then
+	// resizes inside the pyramid (negative here).
+	for (double resize : { 1.0, 2.0, 2.5, -2.0, -2.5 }) {
 		DetectorConfig cfg;
 		cfg.maxWidth = 320;
 		cfg.maxHeight = 240;

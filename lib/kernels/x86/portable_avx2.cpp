@@ -4,7 +4,6 @@
 // integer operations (32-bit multiplies need SSE4.1 or better, which the baseline build
 // cannot assume).
 #include "opt/hist_body.h"
-#include "opt/resample_rgb8_body.h"
 #include "opt/smooth_body.h"
 
 namespace calped {
@@ -20,14 +19,6 @@ void triSumR_avx2(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdi
 		  int width, int height, int r, uint32_t *scratch)
 {
 	triSumRBody(src, srcStride, dst, dstStride, width, height, r, scratch);
-}
-
-void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
-		       uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
-		       const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp)
-{
-	resampleRgb8Body(src, srcStride, srcWidth, srcHeight, dst, dstStride, dstWidth, dstHeight,
-			 xTaps, yTaps, rowTmp);
 }
 
 void shrink4_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
