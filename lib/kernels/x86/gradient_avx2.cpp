@@ -4,8 +4,8 @@
 // -mavx2 and used only when the CPU has AVX2. Bit-identical to ref/gradient_ref.cpp:
 // the reference's cosine gx * rsqrt * 2^-(20 + k/2) is formed here as
 // (gx << (10 - k/2)) * rsqrt = cos * 2^30, which fits 32 bits because |gx| <= sqrt(m2)
-// (and rsqrt exceeds 1/sqrt by at most 2^-11), and its product with 10000 is taken in
-// 64-bit lanes.
+// < sqrt((m + 1) * 2^k) and rsqrtQ20[m] is at most 2^-13 above 2^20 / sqrt(m) (so
+// |cos * 2^30| < 2^30 * (1 + 2^-10)); its product with 10000 is taken in 64-bit lanes.
 #include <immintrin.h>
 
 #include <cstddef>
