@@ -107,7 +107,8 @@ void buildGradientTables(GradientTables &t, int nOrients, int normRad, double no
 	const int oMax = (nOrients << kOrientQ) - 1;
 	const float piF = 3.14159265f, oMult = float(nOrients) / piF;
 	for (int c = -kCosSteps; c <= kCosSteps; c++) {
-		const float theta = std::min(float(std::acos(c / float(kCosSteps))), piF - 1e-6f);
+		// acos in double (the same on every platform), of the toolbox's float argument.
+		const float theta = std::min(float(std::acos(double(c / float(kCosSteps)))), piF - 1e-6f);
 		const int o = static_cast<int>(std::lround(double(theta * oMult) * (1 << kOrientQ)));
 		t.fromCos[c + kCosSteps] = static_cast<uint16_t>(std::clamp(o, 0, oMax));
 	}
