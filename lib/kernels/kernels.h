@@ -18,8 +18,14 @@ constexpr int kOne = 1 << kQ;     // 1.0 in channel fixed point
 // The full-resolution LUV image keeps two more bits: gradients of the smoothed colour
 // planes are small differences, and rounding them at Q14 biases weak magnitudes.
 constexpr int kLuvQ = 16;
+// u and v multiply the ratios x / d and y / d by 52 and 117 (d = x + 15 y + 3 z), so the
+// ratios keep four more bits than the result: Q16 ratios moved the orientation channels
+// by 0.8 points of their mean.
+constexpr int kLuvRatioQ = 20;
 // Orientations are in units of pi/nOrients with this many fraction bits.
 constexpr int kOrientQ = 10;
+// Steps of the cosine in the toolbox's acos table (its gradMag indexes acos(i / 10000)).
+constexpr int kCosSteps = 10000;
 
 // ---- colour: RGB8 -> LUV (Q16), the toolbox's rgbConvert(I, 'luv') -------------------
 struct LuvTables {
@@ -29,9 +35,10 @@ struct LuvTables {
 	int32_t cx[3], cy[3], cz[3];
 	// L/270 in Q16 indexed by floor(y * 1024) (the toolbox's 1025-entry cube-root table).
 	uint16_t l[1025 + 39];
-	// 2^27 / (m + 0.5) for normalised mantissas m in [2048, 4096).
+	// 2^27 / m for normalised mantissas m in [2048, 4096), as the toolbox's rcpps gives it
+	// (12 fraction bits, docs/channels.md).
 	uint32_t rcp[2048];
-	int32_t un13, vn13; // 13 * u'n, 13 * v'n in Q16
+	int32_t un13, vn13; // 13 * u'n, 13 * v'n in Q20 (kLuvRatioQ)
 	int32_t minu, minv; // the toolbox's offsets -88/270, -134/270 in Q16
 };
 void buildLuvTables(LuvTables &t);
@@ -92,13 +99,13 @@ void smoothTri1_opt(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
 
 // ---- gradients ---------------------------------------------------------------------------
 struct GradientTables {
-	// Square root / reciprocal square root, indexed by a 12-bit mantissa (normalizeEven).
-	uint16_t sqrtQ8[4096];   // sqrt(m) * 2^8 (exact for m < 1024, midpoint above)
-	uint32_t rsqrtQ20[4096]; // 2^20 / sqrt(m)
-	// Orientation (in units of pi/nOrients, kOrientQ fraction bits) from a cosine or sine in Q12.
-	uint16_t fromCos[2 * 4096 + 1];  // index cos + 4096
-	uint16_t fromSinAcute[4096 + 1];  // index sin, angle asin(sin) in [0, pi/2]
-	uint16_t fromSinObtuse[4096 + 1]; // index sin, angle pi - asin(sin)
+	// Square root / reciprocal square root as the toolbox computes them (rcpps(rsqrtps(m))
+	// and rsqrtps(m), docs/channels.md), indexed by a 12-bit mantissa (normalizeEven).
+	uint16_t sqrtQ8[4096];   // ~sqrt(m) * 2^8
+	uint32_t rsqrtQ20[4096]; // ~2^20 / sqrt(m), exact
+	// Orientation (in units of pi/nOrients, kOrientQ fraction bits) from the cosine as the
+	// toolbox indexes its acos table: c = cos * kCosSteps truncated toward zero.
+	uint16_t fromCos[2 * kCosSteps + 1]; // index c + kCosSteps
 	int nOrients;
 	// Reciprocal for the normalisation M / (S + c): 1296 * 2^16 / (m + .5), m in [2048, 4096).
 	uint32_t normRcp[2048];

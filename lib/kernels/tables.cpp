@@ -12,6 +12,41 @@ namespace {
 
 int32_t roundToInt(double v) { return static_cast<int32_t>(std::lround(v)); }
 
+// The toolbox's SSE code divides with the approximate reciprocal instructions (rcpps,
+// rsqrtps), whose results on the Intel CPU that made the reference follow a simple rule
+// (docs/channels.md): the input's mantissa is cut to its top 11 (reciprocal) or 10
+// (reciprocal square root) fraction bits, the function is taken at the middle of that
+// interval, and the result is rounded to nearest at 12 fraction bits. Reproducing them,
+// rather than dividing exactly, is what brings the orientation channels to the toolbox's.
+
+// Intel's rcpps of v > 0, exactly (a double holds it).
+double intelRcp(double v)
+{
+	int e;
+	const double f = std::frexp(v, &e); // v = f * 2^e, f in [0.5, 1)
+	const double cell = std::floor(f * 4096.0) - 2048.0; // top 11 fraction bits of 2f
+	const double mid = 1.0 + (cell + 0.5) / 2048.0;     // 2f's interval midpoint, in [1, 2)
+	const double r = std::round(2.0 / mid * 4096.0) / 4096.0; // in (1, 2), 12 fraction bits
+	return std::ldexp(r, -e); // 1 / v = (2 / 2f) * 2^-e
+}
+
+// Intel's rsqrtps of v > 0, exactly.
+double intelRsqrt(double v)
+{
+	int e;
+	const double f = std::frexp(v, &e); // v = 2f * 2^(e-1), 2f in [1, 2)
+	const double cell = std::floor(f * 2048.0) - 1024.0; // top 10 fraction bits of 2f
+	double mid = 1.0 + (cell + 0.5) / 1024.0;
+	int halfExp = (e - 1) / 2;
+	if ((e - 1) % 2 != 0) { // odd power of two: take one 2 into the mantissa
+		mid *= 2.0;
+		halfExp = (e - 2) / 2;
+	}
+	// 1 / sqrt(mid) is in (0.5, 1]: normalise to (1, 2] before rounding 12 fraction bits.
+	const double r = std::round(2.0 / std::sqrt(mid) * 4096.0) / 4096.0;
+	return std::ldexp(r, -halfExp - 1);
+}
+
 } // namespace
 
 void buildLuvTables(LuvTables &t)
@@ -40,46 +75,48 @@ void buildLuvTables(LuvTables &t)
 	for (int i = 1025; i < 1025 + 39; i++)
 		t.l[i] = t.l[1024];
 
-	for (int m = 0; m < 2048; m++)
-		t.rcp[m] = static_cast<uint32_t>(std::lround((1 << 27) / (2048 + m + 0.5)));
+	for (int m = 0; m < 2048; m++) // exact: a 13-bit mantissa times 2^3
+		t.rcp[m] = static_cast<uint32_t>(std::lround(intelRcp(2048 + m) * (1 << 27)));
 
-	const double one = 1 << kLuvQ;
-	t.un13 = roundToInt(13.0 * 0.197833 * one);
-	t.vn13 = roundToInt(13.0 * 0.468331 * one);
+	const double one = 1 << kLuvQ, ratioOne = 1 << kLuvRatioQ;
+	t.un13 = roundToInt(13.0 * 0.197833 * ratioOne);
+	t.vn13 = roundToInt(13.0 * 0.468331 * ratioOne);
 	t.minu = roundToInt(-88.0 * maxi * one);
 	t.minv = roundToInt(-134.0 * maxi * one);
 }
 
 void buildGradientTables(GradientTables &t, int nOrients, int normRad, double normConst)
 {
-	const double pi = 3.14159265358979323846;
-	for (int m = 0; m < 4096; m++) {
-		// Below 1024 the mantissa is the exact value; above, it stands for an interval
-		// of values, so take the interval's midpoint.
-		const double v = m < 1024 ? m : m + 0.5;
-		t.sqrtQ8[m] = static_cast<uint16_t>(std::lround(std::sqrt(v) * 256.0));
-		t.rsqrtQ20[m] = m == 0 ? 0 : static_cast<uint32_t>(std::lround((1 << 20) / std::sqrt(v)));
+	// The toolbox's magnitude is rcpps(rsqrtps(M2)) and its cosine Gx * rsqrtps(M2). Both
+	// depend on M2 only through its top 10 fraction bits and the parity of its exponent,
+	// so the 12-bit index m (normalizeEven: m2 = m * 4^j) loses nothing, and scaling by 4^j
+	// scales the results exactly.
+	t.sqrtQ8[0] = 0;
+	t.rsqrtQ20[0] = 0;
+	for (int m = 1; m < 4096; m++) {
+		const double rs = intelRsqrt(m);
+		t.sqrtQ8[m] = static_cast<uint16_t>(std::lround(intelRcp(rs) * 256.0));
+		t.rsqrtQ20[m] = static_cast<uint32_t>(std::lround(rs * (1 << 20))); // exact
 	}
 
-	// Orientation in [0, pi) as o = round(theta * nOrients / pi * 2^kOrientQ), capped
-	// below nOrients like the toolbox's acos table (which stops at pi - 1e-6). Rounding,
-	// not truncation, so the split between neighbouring bins is unbiased.
+	// The toolbox's acos table in single precision (acos(i / 10000), capped at pi - 1e-6),
+	// turned into o = theta * nOrients / pi as its gradQuantize computes it (in float),
+	// then rounded (not truncated, so the split between neighbouring bins is unbiased) to
+	// kOrientQ fraction bits and kept below nOrients.
 	t.nOrients = nOrients;
 	const int oMax = (nOrients << kOrientQ) - 1;
-	auto toO = [&](double theta) {
-		const int o = static_cast<int>(std::lround(theta * nOrients / pi * (1 << kOrientQ)));
-		return static_cast<uint16_t>(std::clamp(o, 0, oMax));
-	};
-	for (int c = -4096; c <= 4096; c++)
-		t.fromCos[c + 4096] = toO(std::acos(c / 4096.0));
-	for (int s = 0; s <= 4096; s++) {
-		t.fromSinAcute[s] = toO(std::asin(s / 4096.0));
-		t.fromSinObtuse[s] = toO(pi - std::asin(s / 4096.0));
+	const float piF = 3.14159265f, oMult = float(nOrients) / piF;
+	for (int c = -kCosSteps; c <= kCosSteps; c++) {
+		// acos in double (the same on every platform), of the toolbox's float argument.
+		const float theta = std::min(float(std::acos(double(c / float(kCosSteps)))), piF - 1e-6f);
+		const int o = static_cast<int>(std::lround(double(theta * oMult) * (1 << kOrientQ)));
+		t.fromCos[c + kCosSteps] = static_cast<uint16_t>(std::clamp(o, 0, oMax));
 	}
 
 	const double weightSum = std::pow(normRad + 1.0, 4.0);
 	for (int m = 0; m < 2048; m++)
-		t.normRcp[m] = static_cast<uint32_t>(std::lround(weightSum * 65536.0 / (2048 + m + 0.5)));
+		t.normRcp[m] = static_cast<uint32_t>(
+			std::lround(weightSum * 65536.0 * intelRcp(2048 + m)));
 	t.normConst = static_cast<uint32_t>(std::lround(normConst * (1 << kLuvQ) * weightSum));
 }
 

@@ -54,13 +54,10 @@ TEST(ChannelsParity, Frame1NativeWithinTolerance)
 		std::printf("channel %d: mean |diff| %.6f (%.3f%% of mean %.4f), p99 |diff| %.6f (%.3f%% of max %.4f), max |diff| %.5f\n",
 			    c, d.meanAbs, 100 * d.meanAbs / d.meanA, d.meanA, d.p99Abs,
 			    100 * d.p99Abs / d.maxA, d.maxA, d.maxAbs);
-		// Target (issue #2): mean |diff| <= 1% of the channel's mean. Met by L, U, V, the
-		// magnitude and one orientation; the other orientations sit at 1.0-1.6%, at the
-		// floor set by the toolbox's own approximate reciprocals: two colour conversions of
-		// ours that differ by 0.01% move these channels by 1.3-1.9% (docs/parity.md).
-		// Smoothed pyramid levels meet the 1% target (pyramid_parity_test).
-		const double meanBound = c >= 4 ? 0.02 : 0.01;
-		EXPECT_LE(d.meanAbs, meanBound * d.meanA) << "channel " << c;
+		// Target (issue #2): mean |diff| <= 1% of the channel's mean, 99th percentile <= 5%
+		// of its maximum. The orientation channels are the sensitive ones (0.1-0.5%): they
+		// need the toolbox's own approximate reciprocals reproduced (docs/parity.md).
+		EXPECT_LE(d.meanAbs, 0.01 * d.meanA) << "channel " << c;
 		EXPECT_LE(d.p99Abs, 0.05 * d.maxA) << "channel " << c;
 	}
 }

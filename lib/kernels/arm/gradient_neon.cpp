@@ -3,9 +3,9 @@
 // derivatives of the three channels, the strongest kept, then magnitude and orientation
 // with the table reads lane by lane (the row ends take the scalar path of
 // gradient_rows.h). Bit-identical to
-// ref/gradient_ref.cpp: as in the AVX2 build, the reference's 64-bit
-// shiftRound(gx * rsqrt, 8 + k/2) is computed as shiftRound((gx << (10 - k/2)) * rsqrt, 18),
-// the same integer, which fits 32 bits because |gx| <= sqrt(m2).
+// ref/gradient_ref.cpp: as in the AVX2 build, the reference's cosine
+// gx * rsqrt * 2^-(20 + k/2) is formed as (gx << (10 - k/2)) * rsqrt = cos * 2^30, which
+// fits 32 bits because |gx| <= sqrt(m2), and multiplied by 10000 in widening multiplies.
 #include <arm_neon.h>
 
 #include <cstddef>
@@ -18,18 +18,10 @@ namespace kernels {
 
 namespace {
 
-// The three orientation tables are read through one base pointer.
-static_assert(offsetof(GradientTables, fromSinAcute) ==
-		      offsetof(GradientTables, fromCos) + sizeof(uint16_t) * (2 * 4096 + 1),
-	      "orientation tables are contiguous");
-static_assert(offsetof(GradientTables, fromSinObtuse) ==
-		      offsetof(GradientTables, fromSinAcute) + sizeof(uint16_t) * (4096 + 1),
-	      "orientation tables are contiguous");
-
 // Magnitude and orientation of four pixels from their doubled derivatives and m2, the
 // squared magnitude. m2 = 0 needs no special case: its mantissa is 0 and
-// sqrtQ8[0] = rsqrtQ20[0] = 0, so the magnitude is 0 and c12 = 0 reads fromCos[4096], the
-// reference's orientation for no gradient.
+// sqrtQ8[0] = rsqrtQ20[0] = 0, so the magnitude is 0 and the cosine 0 reads
+// fromCos[kCosSteps], the reference's orientation for no gradient.
 CALPED_NEON_INLINE void gradientPixels4(const GradientTables &t, int32x4_t gx, int32x4_t gy,
 					uint32x4_t m2, uint16x4_t &mag, uint16x4_t &orient)
 {
@@ -43,24 +35,22 @@ CALPED_NEON_INLINE void gradientPixels4(const GradientTables &t, int32x4_t gx, i
 	const uint32x4_t sq = vshlq_u32(lookup4(t.sqrtQ8, m), halfK);
 	mag = vrshrn_n_u32(sq, 9);
 
-	// cos and sin in Q12 of the orientation folded into [0, pi).
+	// cos * 2^30 of the orientation folded into [0, pi), then the toolbox's acos index
+	// trunc(cos * 10000).
 	const int32x4_t rs = vreinterpretq_s32_u32(lookup4(t.rsqrtQ20, m));
 	const uint32x4_t gyNeg = vcltq_s32(gy, vdupq_n_s32(0));
 	const int32x4_t gxf = vbslq_s32(gyNeg, vnegq_s32(gx), gx);
 	const int32x4_t up = vsubq_s32(vdupq_n_s32(10), halfK);
-	int32x4_t c12 = vrshrq_n_s32(vmulq_s32(vshlq_s32(gxf, up), rs), 18);
-	c12 = vmaxq_s32(vminq_s32(c12, vdupq_n_s32(4096)), vdupq_n_s32(-4096));
-	int32x4_t s12 = vrshrq_n_s32(vmulq_s32(vshlq_s32(vabsq_s32(gy), up), rs), 18);
-	s12 = vminq_s32(s12, vdupq_n_s32(4096));
-
-	// acos is ill-conditioned near 0 and pi: asin there. Index into fromCos, fromSinAcute
-	// and fromSinObtuse laid end to end.
-	const uint32x4_t useCos = vandq_u32(vcgeq_s32(c12, vdupq_n_s32(-2896)),
-					    vcleq_s32(c12, vdupq_n_s32(2896)));
-	const int32x4_t sinBase = vbslq_s32(vcgtq_s32(c12, vdupq_n_s32(0)), vdupq_n_s32(8193),
-					    vdupq_n_s32(8193 + 4097));
+	const int32x4_t p = vmulq_s32(vshlq_s32(gxf, up), rs);
+	const uint32x4_t absP = vreinterpretq_u32_s32(vabsq_s32(p));
+	const uint32x2_t steps = vdup_n_u32(kCosSteps);
+	const uint32x4_t c = vminq_u32(
+		vcombine_u32(vshrn_n_u64(vmull_u32(vget_low_u32(absP), steps), 30),
+			     vshrn_n_u64(vmull_u32(vget_high_u32(absP), steps), 30)),
+		vdupq_n_u32(kCosSteps));
+	const int32x4_t cs = vreinterpretq_s32_u32(c);
 	const int32x4_t index =
-		vbslq_s32(useCos, vaddq_s32(c12, vdupq_n_s32(4096)), vaddq_s32(sinBase, s12));
+		vaddq_s32(vbslq_s32(vcltq_s32(p, vdupq_n_s32(0)), vnegq_s32(cs), cs), vdupq_n_s32(kCosSteps));
 	orient = vmovn_u32(lookup4(t.fromCos, index));
 }
 

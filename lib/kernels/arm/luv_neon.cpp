@@ -28,11 +28,11 @@ inline int32x4_t mulShiftRound(int32x4_t a, int32x4_t b, int32x4_t s)
 	return vcombine_s32(vmovn_s64(lo), vmovn_s64(hi));
 }
 
-// shiftRound(a * b, 16) per lane, for results that fit 32 bits.
-inline int32x4_t mulShiftRound16(int32x4_t a, int32x4_t b)
+// shiftRound(a * b, kLuvRatioQ) per lane, for results that fit 32 bits.
+inline int32x4_t mulShiftRoundRatio(int32x4_t a, int32x4_t b)
 {
-	const int64x2_t lo = vrshrq_n_s64(vmull_s32(vget_low_s32(a), vget_low_s32(b)), 16);
-	const int64x2_t hi = vrshrq_n_s64(vmull_s32(vget_high_s32(a), vget_high_s32(b)), 16);
+	const int64x2_t lo = vrshrq_n_s64(vmull_s32(vget_low_s32(a), vget_low_s32(b)), kLuvRatioQ);
+	const int64x2_t hi = vrshrq_n_s64(vmull_s32(vget_high_s32(a), vget_high_s32(b)), kLuvRatioQ);
 	return vcombine_s32(vmovn_s64(lo), vmovn_s64(hi));
 }
 
@@ -58,15 +58,15 @@ CALPED_NEON_INLINE Luv4 luv4(const LuvTables &t, uint16x4_t r16, uint16x4_t g16,
 	const int32x4_t m = vreinterpretq_s32_u32(vshlq_u32(vreinterpretq_u32_s32(d), vnegq_s32(k)));
 	const int32x4_t index = vbslq_s32(dZero, vdupq_n_s32(0), vsubq_s32(m, vdupq_n_s32(2048)));
 	const int32x4_t rcp = vreinterpretq_s32_u32(lookup4(t.rcp, index));
-	const int32x4_t shift = vaddq_s32(k, vdupq_n_s32(13));
+	const int32x4_t shift = vaddq_s32(k, vdupq_n_s32(29 - kLuvRatioQ));
 	const int32x4_t notZero = vreinterpretq_s32_u32(vmvnq_u32(dZero));
 	const int32x4_t xd = vandq_s32(mulShiftRound(X, rcp, shift), notZero);
 	const int32x4_t yd = vandq_s32(mulShiftRound(Y, rcp, shift), notZero);
 
 	const int32x4_t tu = vsubq_s32(vmulq_n_s32(xd, 52), vdupq_n_s32(t.un13));
 	const int32x4_t tv = vsubq_s32(vmulq_n_s32(yd, 117), vdupq_n_s32(t.vn13));
-	const int32x4_t U = vsubq_s32(mulShiftRound16(L, tu), vdupq_n_s32(t.minu));
-	const int32x4_t V = vsubq_s32(mulShiftRound16(L, tv), vdupq_n_s32(t.minv));
+	const int32x4_t U = vsubq_s32(mulShiftRoundRatio(L, tu), vdupq_n_s32(t.minu));
+	const int32x4_t V = vsubq_s32(mulShiftRoundRatio(L, tv), vdupq_n_s32(t.minv));
 	return { vmovn_u32(vreinterpretq_u32_s32(L)), vqmovun_s32(U), vqmovun_s32(V) };
 }
 

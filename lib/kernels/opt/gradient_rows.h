@@ -65,23 +65,16 @@ inline void gradientPixel(const GradientTables &t, int32_t gx, int32_t gy, uint1
 	const uint32_t m2 = uint32_t(gx * gx) + uint32_t(gy * gy);
 	if (m2 == 0) {
 		*mag = 0;
-		*orient = t.fromCos[4096];
+		*orient = t.fromCos[kCosSteps];
 		return;
 	}
 	int m, k;
 	normalizeEven(m2, m, k);
 	*mag = saturateU16(shiftRound(int64_t(t.sqrtQ8[m]) << (k / 2), 9));
-	const int64_t rs = t.rsqrtQ20[m];
-	const int32_t gxf = gy < 0 ? -gx : gx;
-	const int shift = 8 + k / 2;
-	int64_t c12 = shiftRound(gxf * rs, shift);
-	c12 = c12 < -4096 ? -4096 : (c12 > 4096 ? 4096 : c12);
-	int64_t s12 = shiftRound((gy < 0 ? -gy : gy) * rs, shift);
-	s12 = s12 > 4096 ? 4096 : s12;
-	if (c12 >= -2896 && c12 <= 2896)
-		*orient = t.fromCos[c12 + 4096];
-	else
-		*orient = c12 > 0 ? t.fromSinAcute[s12] : t.fromSinObtuse[s12];
+	const int64_t p = (gy < 0 ? -gx : gx) * int64_t(t.rsqrtQ20[m]);
+	int64_t c = ((p < 0 ? -p : p) * kCosSteps) >> (20 + k / 2);
+	c = c > kCosSteps ? kCosSteps : c;
+	*orient = t.fromCos[(p < 0 ? -c : c) + kCosSteps];
 }
 
 } // namespace

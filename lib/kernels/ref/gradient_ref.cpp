@@ -34,7 +34,7 @@ void gradMagOrient_ref(const GradientTables &t, const uint16_t *const planes[3],
 		       ptrdiff_t stride, int width, int height, uint16_t *mag, uint16_t *orient,
 		       ptrdiff_t outStride, int32_t *)
 {
-	const int noGradientOrient = t.fromCos[4096]; // acos(0): the toolbox's pi/2
+	const int noGradientOrient = t.fromCos[kCosSteps]; // acos(0): the toolbox's pi/2
 	for (int y = 0; y < height; y++) {
 		for (int x = 0; x < width; x++) {
 			int32_t gx = 0, gy = 0;
@@ -61,18 +61,11 @@ void gradMagOrient_ref(const GradientTables &t, const uint16_t *const planes[3],
 			normalizeEven(m2, m, k);
 			// |G| = sqrt(m2) / 2 in Q16.
 			*mo = saturateU16(shiftRound(int64_t(t.sqrtQ8[m]) << (k / 2), 9));
-			// cos and sin of the orientation folded into [0, pi) (gx flips with gy's sign).
-			const int64_t rs = t.rsqrtQ20[m];
-			const int32_t gxf = gy < 0 ? -gx : gx;
-			const int32_t c12 = static_cast<int32_t>(
-				std::clamp<int64_t>(shiftRound(gxf * rs, 8 + k / 2), -4096, 4096));
-			const int32_t s12 = static_cast<int32_t>(
-				std::clamp<int64_t>(shiftRound((gy < 0 ? -gy : gy) * rs, 8 + k / 2), 0, 4096));
-			// acos is ill-conditioned near 0 and pi: use asin there.
-			if (c12 >= -2896 && c12 <= 2896)
-				*oo = t.fromCos[c12 + 4096];
-			else
-				*oo = c12 > 0 ? t.fromSinAcute[s12] : t.fromSinObtuse[s12];
+			// Cosine of the orientation folded into [0, pi) (gx flips with gy's sign), as
+			// the toolbox's acos index: gx * rsqrt(m2) * 10000 truncated toward zero.
+			const int64_t p = int64_t(gy < 0 ? -gx : gx) * t.rsqrtQ20[m]; // cos * 2^(20 + k/2)
+			const int64_t c = ((p < 0 ? -p : p) * kCosSteps) >> (20 + k / 2);
+			*oo = t.fromCos[std::min<int64_t>(c, kCosSteps) * (p < 0 ? -1 : 1) + kCosSteps];
 		}
 	}
 }

@@ -21,16 +21,16 @@ void rgbToLuv_ref(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride, i
 			const int32_t L = t.l[Y >> 18]; // Q16
 			// d / 4 = x + 15 y + 3 z in Q26, so that it fits 31 bits.
 			const int32_t d = (X >> 2) + 15 * (Y >> 2) + 3 * (Z >> 2);
-			int64_t xd = 0, yd = 0; // x / d and y / d in Q16
+			int64_t xd = 0, yd = 0; // x / d and y / d in Q20 (kLuvRatioQ)
 			if (d > 0) {
 				int m, k;
 				normalize12(static_cast<uint64_t>(d), m, k);
 				const int64_t r = t.rcp[m - 2048]; // 2^27 / m
-				xd = shiftRound(int64_t(X) * r, 13 + k);
-				yd = shiftRound(int64_t(Y) * r, 13 + k);
+				xd = shiftRound(int64_t(X) * r, 29 - kLuvRatioQ + k);
+				yd = shiftRound(int64_t(Y) * r, 29 - kLuvRatioQ + k);
 			}
-			const int64_t uu = shiftRound(L * (52 * xd - t.un13), kLuvQ) - t.minu;
-			const int64_t vv = shiftRound(L * (117 * yd - t.vn13), kLuvQ) - t.minv;
+			const int64_t uu = shiftRound(L * (52 * xd - t.un13), kLuvRatioQ) - t.minu;
+			const int64_t vv = shiftRound(L * (117 * yd - t.vn13), kLuvRatioQ) - t.minv;
 			lo[x] = static_cast<uint16_t>(L);
 			uo[x] = saturateU16(uu);
 			vo[x] = saturateU16(vv);

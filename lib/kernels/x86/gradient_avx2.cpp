@@ -2,9 +2,10 @@
 // Gradient magnitude and orientation with AVX2: the per-pixel part (normalisation,
 // square-root and orientation tables) eight pixels at a time, with gathers. Compiled with
 // -mavx2 and used only when the CPU has AVX2. Bit-identical to ref/gradient_ref.cpp:
-// the reference's 64-bit products gx * rsqrt / 2^(8 + k/2) are computed here as
-// (gx << (10 - k/2)) * rsqrt / 2^18, which is the same integer and fits 32 bits
-// because |gx| <= sqrt(m2).
+// the reference's cosine gx * rsqrt * 2^-(20 + k/2) is formed here as
+// (gx << (10 - k/2)) * rsqrt = cos * 2^30, which fits 32 bits because |gx| <= sqrt(m2)
+// < sqrt((m + 1) * 2^k) and rsqrtQ20[m] is at most 2^-13 above 2^20 / sqrt(m) (so
+// |cos * 2^30| < 2^30 * (1 + 2^-10)); its product with 10000 is taken in 64-bit lanes.
 #include <immintrin.h>
 
 #include <cstddef>
@@ -17,13 +18,19 @@ namespace kernels {
 
 namespace {
 
-// The three orientation tables are read through one base pointer (see the static_asserts).
-static_assert(offsetof(GradientTables, fromSinAcute) ==
-		      offsetof(GradientTables, fromCos) + sizeof(uint16_t) * (2 * 4096 + 1),
-	      "orientation tables are contiguous");
-static_assert(offsetof(GradientTables, fromSinObtuse) ==
-		      offsetof(GradientTables, fromSinAcute) + sizeof(uint16_t) * (4096 + 1),
-	      "orientation tables are contiguous");
+// gatherU16 reads two bytes past the entry it wants: the last fromCos entry has nOrients after it.
+static_assert(offsetof(GradientTables, nOrients) >=
+		      offsetof(GradientTables, fromCos) + sizeof(uint16_t) * (2 * kCosSteps + 2),
+	      "fromCos is followed by readable bytes");
+
+// (|p| * 10000) >> 30 per lane, for |p| < 2^31 (even and odd lanes multiplied apart).
+inline __m256i cosSteps8(__m256i absP)
+{
+	const __m256i steps = _mm256_set1_epi32(kCosSteps);
+	const __m256i even = _mm256_srli_epi64(_mm256_mul_epu32(absP, steps), 30);
+	const __m256i odd = _mm256_srli_epi64(_mm256_mul_epu32(_mm256_srli_epi64(absP, 32), steps), 30);
+	return _mm256_blend_epi32(even, _mm256_slli_epi64(odd, 32), 0xAA);
+}
 
 void gradientPixels8(const GradientTables &t, const int32_t *gxp, const int32_t *gyp,
 		     uint16_t *mag, uint16_t *orient)
@@ -45,28 +52,15 @@ void gradientPixels8(const GradientTables &t, const int32_t *gxp, const int32_t 
 		_mm256_add_epi32(_mm256_sllv_epi32(sq, halfK), _mm256_set1_epi32(256)), 9);
 	magv = _mm256_andnot_si256(isZero, magv);
 
+	// cos * 2^30 of the orientation folded into [0, pi), then the toolbox's acos index
+	// trunc(cos * 10000). m2 = 0 reads rsqrtQ20[0] = 0: cosine 0, orientation acos(0).
 	const __m256i rs = _mm256_i32gather_epi32(reinterpret_cast<const int *>(t.rsqrtQ20), m, 4);
 	const __m256i gyNeg = _mm256_cmpgt_epi32(zero, gy);
 	const __m256i gxf = _mm256_blendv_epi8(gx, _mm256_sub_epi32(zero, gx), gyNeg);
-	const __m256i gyAbs = _mm256_abs_epi32(gy);
 	const __m256i up = _mm256_sub_epi32(_mm256_set1_epi32(10), halfK);
-	const __m256i half = _mm256_set1_epi32(1 << 17);
-	__m256i c12 = _mm256_srai_epi32(
-		_mm256_add_epi32(_mm256_mullo_epi32(_mm256_sllv_epi32(gxf, up), rs), half), 18);
-	c12 = _mm256_max_epi32(_mm256_min_epi32(c12, _mm256_set1_epi32(4096)), _mm256_set1_epi32(-4096));
-	__m256i s12 = _mm256_srai_epi32(
-		_mm256_add_epi32(_mm256_mullo_epi32(_mm256_sllv_epi32(gyAbs, up), rs), half), 18);
-	s12 = _mm256_min_epi32(s12, _mm256_set1_epi32(4096));
-
-	// Index into fromCos / fromSinAcute / fromSinObtuse laid end to end.
-	const __m256i useCos = _mm256_and_si256(_mm256_cmpgt_epi32(c12, _mm256_set1_epi32(-2897)),
-						_mm256_cmpgt_epi32(_mm256_set1_epi32(2897), c12));
-	const __m256i cosIndex = _mm256_add_epi32(c12, _mm256_set1_epi32(4096));
-	const __m256i sinBase = _mm256_blendv_epi8(_mm256_set1_epi32(8193 + 4097),
-						   _mm256_set1_epi32(8193),
-						   _mm256_cmpgt_epi32(c12, zero));
-	__m256i index = _mm256_blendv_epi8(_mm256_add_epi32(sinBase, s12), cosIndex, useCos);
-	index = _mm256_blendv_epi8(index, _mm256_set1_epi32(4096), isZero);
+	const __m256i p = _mm256_mullo_epi32(_mm256_sllv_epi32(gxf, up), rs);
+	const __m256i c = _mm256_min_epi32(cosSteps8(_mm256_abs_epi32(p)), _mm256_set1_epi32(kCosSteps));
+	const __m256i index = _mm256_add_epi32(_mm256_sign_epi32(c, p), _mm256_set1_epi32(kCosSteps));
 	const __m256i o = gatherU16(t.fromCos, index);
 
 	// Pack to uint16 (packus works per 128-bit lane, hence the permute).

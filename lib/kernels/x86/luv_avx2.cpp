@@ -13,15 +13,16 @@ namespace kernels {
 
 namespace {
 
-// (a * b + 2^15) >> 16 per lane for signed a, b whose result fits 32 bits: the low 32
+// (a * b + 2^(S-1)) >> S per lane for signed a, b whose result fits 32 bits: the low 32
 // bits of a logical 64-bit shift are the right ones even for negative products.
-inline __m256i mulShiftRound16S(__m256i a, __m256i b)
+template <int S>
+inline __m256i mulShiftRoundS(__m256i a, __m256i b)
 {
-	const __m256i half = _mm256_set1_epi64x(1 << 15);
+	const __m256i half = _mm256_set1_epi64x(int64_t(1) << (S - 1));
 	const __m256i pe = _mm256_add_epi64(_mm256_mul_epi32(a, b), half);
 	const __m256i po = _mm256_add_epi64(
 		_mm256_mul_epi32(_mm256_srli_epi64(a, 32), _mm256_srli_epi64(b, 32)), half);
-	return _mm256_blend_epi32(_mm256_srli_epi64(pe, 16), _mm256_slli_epi64(_mm256_srli_epi64(po, 16), 32), 0xAA);
+	return _mm256_blend_epi32(_mm256_srli_epi64(pe, S), _mm256_slli_epi64(_mm256_srli_epi64(po, S), 32), 0xAA);
 }
 
 inline __m256i dot3(const int32_t c[3], __m256i r, __m256i g, __m256i b)
@@ -63,7 +64,7 @@ void luv8(const LuvTables &t, const uint8_t *p, uint16_t *lo, uint16_t *uo, uint
 	m = _mm256_blendv_epi8(m, _mm256_set1_epi32(2048), dZero); // keep the gather in range
 	const __m256i rcp = _mm256_i32gather_epi32(reinterpret_cast<const int *>(t.rcp),
 						   _mm256_sub_epi32(m, _mm256_set1_epi32(2048)), 4);
-	const __m256i shift = _mm256_add_epi32(k, _mm256_set1_epi32(13));
+	const __m256i shift = _mm256_add_epi32(k, _mm256_set1_epi32(29 - kLuvRatioQ));
 	__m256i xd = mulShiftRoundU(X, rcp, shift);
 	__m256i yd = mulShiftRoundU(Y, rcp, shift);
 	xd = _mm256_andnot_si256(dZero, xd);
@@ -71,8 +72,8 @@ void luv8(const LuvTables &t, const uint8_t *p, uint16_t *lo, uint16_t *uo, uint
 
 	const __m256i tu = _mm256_sub_epi32(_mm256_mullo_epi32(xd, _mm256_set1_epi32(52)), _mm256_set1_epi32(t.un13));
 	const __m256i tv = _mm256_sub_epi32(_mm256_mullo_epi32(yd, _mm256_set1_epi32(117)), _mm256_set1_epi32(t.vn13));
-	const __m256i U = _mm256_sub_epi32(mulShiftRound16S(L, tu), _mm256_set1_epi32(t.minu));
-	const __m256i V = _mm256_sub_epi32(mulShiftRound16S(L, tv), _mm256_set1_epi32(t.minv));
+	const __m256i U = _mm256_sub_epi32(mulShiftRoundS<kLuvRatioQ>(L, tu), _mm256_set1_epi32(t.minu));
+	const __m256i V = _mm256_sub_epi32(mulShiftRoundS<kLuvRatioQ>(L, tv), _mm256_set1_epi32(t.minv));
 
 	// Saturate to uint16 and store (packus works per 128-bit lane, hence the permutes).
 	const __m256i lu = _mm256_permute4x64_epi64(_mm256_packus_epi32(L, U), 0xD8);
