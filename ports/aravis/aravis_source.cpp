@@ -2,6 +2,7 @@
 #include "aravis_source.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <new>
 #include <thread>
@@ -53,6 +54,12 @@ std::string describe(const AravisOptions &o)
 	return o.camera.empty() ? std::string("(first found)") : "'" + o.camera + "'";
 }
 
+// A stream counter since acquisition started (0 when the stream never started).
+uint64_t streamCounterSinceStart(uint64_t now, uint64_t atStart)
+{
+	return now >= atStart ? now - atStart : 0;
+}
+
 // Pops wait at most this long at a time, so a heartbeat loss is seen within it.
 constexpr int kPollMs = 100;
 
@@ -60,9 +67,9 @@ constexpr int kPollMs = 100;
 
 Status AravisSource::open(const AravisOptions &options, std::unique_ptr<AravisSource> &out)
 {
-	if (options.buffers < 2 || options.buffers > 64)
+	if (options.buffers < 2 || options.buffers > kMaxBuffers)
 		return Status::error(ErrorCode::InvalidArgument,
-				     "aravis: buffers must be 2..64, got %d", options.buffers);
+				     "aravis: buffers must be 2..%d, got %d", kMaxBuffers, options.buffers);
 	if (options.width < 0 || options.height < 0 || !(options.frameRate >= 0) ||
 	    options.packetSize < 0 || options.socketBufferBytes < 0 || options.packetTimeoutMs < 0 ||
 	    options.frameRetentionMs < 0 || options.lostAfterMs < 1 || options.reconnectEveryMs < 1)
@@ -181,9 +188,12 @@ Status AravisSource::connect()
 			g_object_set(stream_, "frame-retention",
 				     static_cast<guint>(options_.frameRetentionMs * 1000), nullptr);
 	}
-	// The fixed pool: every frame lives in one of these until stop().
-	for (int i = 0; i < options_.buffers; i++)
-		arv_stream_push_buffer(stream_, arv_buffer_new_allocate(payload_));
+	// The fixed pool: every frame lives in one of these until stop(). Aravis gets them at
+	// start(): its in-process Fake stream fills every queued buffer from the stream's
+	// creation on, and such a frame, made before start(), must not be lent.
+	for (pooled_ = 0; pooled_ < options_.buffers; pooled_++)
+		pool_[pooled_] = arv_buffer_new_allocate(payload_);
+	underrunsAtStart_ = missingFramesAtStart_ = UINT64_MAX; // not started: nothing counts
 
 	if (ARV_IS_GV_DEVICE(arv_camera_get_device(camera_))) {
 		GSocketAddress *sa = arv_gv_device_get_device_address(ARV_GV_DEVICE(arv_camera_get_device(camera_)));
@@ -195,7 +205,7 @@ Status AravisSource::connect()
 			g_free(text);
 		}
 	}
-	haveFrameId_ = false; // a restarted camera numbers its frames afresh
+	numbers_.restart(); // a restarted camera numbers its frames afresh
 	controlLost_ = false;
 	dead_ = false;
 	lostHandler_ = g_signal_connect(arv_camera_get_device(camera_), "control-lost",
@@ -217,6 +227,11 @@ void AravisSource::onControlLost(ArvDevice *, void *self)
 
 Status AravisSource::startAcquisition()
 {
+	for (int i = 0; i < pooled_; i++)
+		arv_stream_push_buffer(stream_, pool_[i]);
+	pooled_ = 0;
+	underrunsAtStart_ = streamInfo(stream_, "n_underruns");
+	missingFramesAtStart_ = streamInfo(stream_, "n_missing_frames");
 	GError *error = nullptr;
 	arv_camera_start_acquisition(camera_, &error);
 	if (error)
@@ -257,7 +272,7 @@ void AravisSource::release()
 	lent_ = nullptr;
 }
 
-Status AravisSource::lend(ArvBuffer *buffer, Frame &frame)
+Status AravisSource::lend(ArvBuffer *buffer, uint64_t number, Frame &frame)
 {
 	size_t size = 0;
 	const uint8_t *data = static_cast<const uint8_t *>(arv_buffer_get_image_data(buffer, &size));
@@ -282,7 +297,7 @@ Status AravisSource::lend(ArvBuffer *buffer, Frame &frame)
 				     name_.c_str());
 	}
 	lent_ = buffer;
-	frame.id = arv_buffer_get_frame_id(buffer);
+	frame.id = number;
 	frame.timestampNs = static_cast<int64_t>(arv_buffer_get_system_timestamp(buffer));
 	stats_.delivered++;
 	lastFrame_ = Clock::now();
@@ -304,6 +319,7 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 	if (!camera_)
 		return Status::error(ErrorCode::CameraLost, "%s: the camera was lost", name_.c_str());
 	ArvBuffer *newest = nullptr;
+	uint64_t newestNumber = 0;
 	for (;;) {
 		if (controlLost_)
 			return lost("the camera stopped answering (heartbeat lost)");
@@ -314,7 +330,7 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 			stream_, static_cast<guint64>(std::min<int64_t>(left.count(), kPollMs * 1000)));
 		if (!b)
 			continue;
-		noteFrameId(arv_buffer_get_frame_id(b));
+		const uint64_t number = numbers_.next(arv_buffer_get_frame_id(b));
 		if (arv_buffer_get_status(b) != ARV_BUFFER_STATUS_SUCCESS) {
 			const ArvBufferStatus s = arv_buffer_get_status(b);
 			stats_.incomplete++;
@@ -325,20 +341,24 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 			continue;
 		}
 		newest = b;
+		newestNumber = number;
 		// Drop policy: lend the newest complete frame; older ones go back to the pool.
+		// Aravis's output queue is in frame order, so the last one out is the newest
+		// (and has the highest number).
 		while ((b = arv_stream_try_pop_buffer(stream_)) != nullptr) {
-			noteFrameId(arv_buffer_get_frame_id(b));
+			const uint64_t later = numbers_.next(arv_buffer_get_frame_id(b));
 			if (arv_buffer_get_status(b) == ARV_BUFFER_STATUS_SUCCESS) {
 				arv_stream_push_buffer(stream_, newest);
 				stats_.dropped++;
 				newest = b;
+				newestNumber = later;
 			} else {
 				stats_.incomplete++;
 				transport_.incompleteOther++;
 				arv_stream_push_buffer(stream_, b);
 			}
 		}
-		const Status st = lend(newest, frame);
+		const Status st = lend(newest, newestNumber, frame);
 		if (st.ok())
 			return st;
 	}
@@ -416,8 +436,9 @@ void AravisSource::accumulateStreamCounters()
 {
 	if (!stream_)
 		return;
-	closedUnderruns_ += streamInfo(stream_, "n_underruns");
-	closedMissingFrames_ += streamInfo(stream_, "n_missing_frames");
+	closedUnderruns_ += streamCounterSinceStart(streamInfo(stream_, "n_underruns"), underrunsAtStart_);
+	closedMissingFrames_ +=
+		streamCounterSinceStart(streamInfo(stream_, "n_missing_frames"), missingFramesAtStart_);
 	if (ARV_IS_GV_STREAM(stream_)) {
 		guint64 resent = 0, missing = 0;
 		arv_gv_stream_get_statistics(ARV_GV_STREAM(stream_), &resent, &missing);
@@ -450,6 +471,9 @@ void AravisSource::disconnect()
 	}
 	stream_ = nullptr;
 	camera_ = nullptr;
+	for (int i = 0; i < pooled_; i++) // never given to Aravis (not started)
+		g_object_unref(pool_[i]);
+	pooled_ = 0;
 }
 
 void AravisSource::releaseDeadCamera()
@@ -485,50 +509,28 @@ void AravisSource::stop()
 	reconnecting_ = false;
 }
 
-void AravisSource::noteFrameId(uint64_t id)
-{
-	// Frames that never came out of Aravis (no free buffer, or no packet of them arrived)
-	// show as gaps in the block ids. GigE Vision 1.x ids are 16 bits and wrap.
-	if (!haveFrameId_) {
-		haveFrameId_ = true;
-		maxFrameId_ = id;
-		return;
-	}
-	int64_t delta = static_cast<int64_t>(id) - static_cast<int64_t>(maxFrameId_);
-	if (id <= 0xffff && maxFrameId_ <= 0xffff) {
-		if (delta < -32768)
-			delta += 65536;
-		else if (delta > 32768)
-			delta -= 65536;
-	}
-	if (delta > 0) {
-		transport_.unseenFrames += static_cast<uint64_t>(delta - 1);
-		maxFrameId_ = id;
-	} else if (delta < 0 && transport_.unseenFrames > 0) {
-		transport_.unseenFrames--; // a late frame, counted as a gap before
-	}
-}
-
 SourceStats AravisSource::stats() const
 {
 	SourceStats s = stats_;
 	// A frame the consumer never got because no buffer was free, or that never arrived
 	// at all: counted with the drops (Aravis's own underrun counter counts packets, not
 	// frames, so it is reported apart).
-	s.dropped += transport_.unseenFrames;
+	s.dropped += numbers_.unseen();
 	return s;
 }
 
 AravisStats AravisSource::transportStats() const
 {
 	AravisStats t = transport_;
+	t.unseenFrames = numbers_.unseen();
 	t.underruns = closedUnderruns_;
 	t.missingFrames = closedMissingFrames_;
 	t.resentPackets = closedResent_;
 	t.missingPackets = closedMissing_;
 	if (stream_) {
-		t.underruns += streamInfo(stream_, "n_underruns");
-		t.missingFrames += streamInfo(stream_, "n_missing_frames");
+		t.underruns += streamCounterSinceStart(streamInfo(stream_, "n_underruns"), underrunsAtStart_);
+		t.missingFrames +=
+			streamCounterSinceStart(streamInfo(stream_, "n_missing_frames"), missingFramesAtStart_);
 		if (ARV_IS_GV_STREAM(stream_)) {
 			guint64 resent = 0, missing = 0;
 			arv_gv_stream_get_statistics(ARV_GV_STREAM(stream_), &resent, &missing);

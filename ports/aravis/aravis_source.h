@@ -12,6 +12,7 @@
 #include <string>
 #include <thread>
 
+#include "frame_numbers.h"
 #include "frame_source.h"
 
 // Aravis's GObject types, kept out of this header.
@@ -55,8 +56,8 @@ struct AravisStats {
 	uint64_t incompleteTimeout = 0;        // ... as TIMEOUT (frame retention expired)
 	uint64_t incompleteOther = 0;          // ... any other failed status
 	uint64_t unseenFrames = 0;             // block ids that never came out of Aravis (in dropped)
-	uint64_t underruns = 0;                // Aravis's n_underruns (counts packets without a buffer)
-	uint64_t missingFrames = 0;            // Aravis's n_missing_frames
+	uint64_t underruns = 0;                // Aravis's n_underruns since start() (packets without a buffer)
+	uint64_t missingFrames = 0;            // Aravis's n_missing_frames since start()
 	uint64_t resentPackets = 0;            // packets recovered by resend
 	uint64_t missingPackets = 0;           // packets never recovered
 	uint64_t lostEvents = 0;               // times the camera was found lost
@@ -72,10 +73,14 @@ public:
 	static Status open(const AravisOptions &options, std::unique_ptr<AravisSource> &out);
 	~AravisSource() override;
 
+	// Gives the buffer pool to Aravis and starts acquisition: only frames made after this
+	// are lent (Aravis's in-process Fake stream fills queued buffers even before).
 	Status start() override;
 	// Lends the newest complete frame (older complete ones are dropped and counted).
 	// Incomplete frames are counted and never lent. CameraLost when the camera stopped
 	// answering (or, with reconnect, never: Timeout while it is away).
+	// Frame::id is the camera's block id unwrapped (frame_numbers.h): it only grows, also
+	// across the 16-bit wrap and a reconnection.
 	Status next(Frame &frame, int timeoutMs) override;
 	void release() override;
 	void stop() override;
@@ -99,12 +104,11 @@ private:
 	Status startAcquisition();
 	void disconnect();    // everything connect() made, in reverse; tolerates a dead camera
 	void releaseDeadCamera();
-	void noteFrameId(uint64_t id);
 	void accumulateStreamCounters();
 	bool cameraAnswers();
 	Status lost(const char *why); // CameraLost, or start reconnecting
 	bool tryReconnect(std::chrono::steady_clock::time_point deadline); // true once streaming again
-	Status lend(ArvBuffer *buffer, Frame &frame);
+	Status lend(ArvBuffer *buffer, uint64_t number, Frame &frame);
 	static void onControlLost(ArvDevice *device, void *self);
 
 	AravisOptions options_;
@@ -113,6 +117,10 @@ private:
 	ArvCamera *camera_ = nullptr;
 	ArvStream *stream_ = nullptr;
 	ArvBuffer *lent_ = nullptr;
+	// The pool between connect() and startAcquisition(): ours until Aravis gets it.
+	static constexpr int kMaxBuffers = 64;
+	ArvBuffer *pool_[kMaxBuffers] = {};
+	int pooled_ = 0;
 	unsigned long lostHandler_ = 0;
 	std::atomic<bool> controlLost_{ false };
 	bool started_ = false;
@@ -123,8 +131,7 @@ private:
 	std::thread reaper_; // releases a dead camera (see releaseDeadCamera)
 	size_t payload_ = 0;
 	bool socketPresized_ = false;
-	bool haveFrameId_ = false;
-	uint64_t maxFrameId_ = 0;
+	FrameNumbers numbers_;
 	int width_ = 0, height_ = 0;
 
 	using Clock = std::chrono::steady_clock;
@@ -134,6 +141,9 @@ private:
 	AravisStats transport_;
 	// Stream counters of connections already closed (Aravis's restart at zero).
 	uint64_t closedUnderruns_ = 0, closedMissingFrames_ = 0, closedResent_ = 0, closedMissing_ = 0;
+	// The open stream's counters when acquisition started (the Fake stream counts
+	// underruns from its creation).
+	uint64_t underrunsAtStart_ = 0, missingFramesAtStart_ = 0;
 };
 
 } // namespace ports

@@ -20,6 +20,7 @@
 #include "aravis_source.h"
 #include "fake_gv_camera.h"
 #include "file_source.h"
+#include "frame_numbers.h"
 #include "pixel_formats.h"
 #include "test_data.h"
 
@@ -122,6 +123,98 @@ TEST(AravisPixelFormats, ViewHonoursPaddingAndRefusesShortBuffers)
 	EXPECT_EQ(v.strides[0], 12); // 3 pairs of 4 bytes
 }
 
+// --- Frame numbers (no camera) ---
+
+// GigE Vision 1.x block ids skip 0: 65535 is followed by 1. Aravis's simulators start at
+// 65401, so every stream of more than 135 frames crosses this.
+TEST(AravisFrameNumbers, GrowAcrossTheSixteenBitWrap)
+{
+	FrameNumbers n;
+	EXPECT_EQ(n.next(65533), 65533u); // the first number is the camera's id
+	EXPECT_EQ(n.next(65534), 65534u);
+	EXPECT_EQ(n.next(65535), 65535u);
+	EXPECT_EQ(n.next(1), 65536u);
+	EXPECT_EQ(n.next(2), 65537u);
+	EXPECT_EQ(n.unseen(), 0u) << "the skipped id 0 is not a frame";
+}
+
+TEST(AravisFrameNumbers, GapsAreUnseenFramesAlsoAcrossTheWrap)
+{
+	FrameNumbers n;
+	EXPECT_EQ(n.next(65530), 65530u);
+	EXPECT_EQ(n.next(65534), 65534u); // 65531..65533 never came out
+	EXPECT_EQ(n.unseen(), 3u);
+	EXPECT_EQ(n.next(3), 65538u); // 65535, 1, 2 never came out
+	EXPECT_EQ(n.unseen(), 6u);
+}
+
+// A long stream from a 16-bit camera with some frames missing: the numbers count the
+// camera's frames exactly, and the gaps exactly the missing ones.
+TEST(AravisFrameNumbers, CountEveryFrameOfALongWrappingStream)
+{
+	FrameNumbers n;
+	const uint64_t first = 65401;
+	uint64_t missing = 0, lastNumber = 0;
+	bool strictlyIncreasing = true, exact = true;
+	for (uint64_t k = first; k < first + 300000; k++) {
+		if (k % 97 == 0 || k % 1000 < 3) { // never came out of Aravis
+			missing++;
+			continue;
+		}
+		const uint64_t blockId = (k - 1) % 65535 + 1; // 1..65535
+		const uint64_t number = n.next(blockId);
+		strictlyIncreasing = strictlyIncreasing && number > lastNumber;
+		exact = exact && number == k;
+		lastNumber = number;
+	}
+	EXPECT_TRUE(strictlyIncreasing);
+	EXPECT_TRUE(exact);
+	EXPECT_EQ(n.unseen(), missing);
+}
+
+TEST(AravisFrameNumbers, SixtyFourBitIdsAreTakenAsTheyAre)
+{
+	FrameNumbers n;
+	EXPECT_EQ(n.next(0), 0u); // USB3 Vision counts from 0
+	EXPECT_EQ(n.next(1), 1u);
+	EXPECT_EQ(n.next(5), 5u);
+	EXPECT_EQ(n.unseen(), 3u);
+	FrameNumbers m;
+	EXPECT_EQ(m.next(65534), 65534u);
+	EXPECT_EQ(m.next(65536), 65536u); // past 16 bits: 65535 never came out
+	EXPECT_EQ(m.next(70000), 70000u);
+	EXPECT_EQ(m.unseen(), 1u + 4463u);
+}
+
+// A camera whose counter goes back (it restarted it, or sends 0 after 65535): the numbers
+// go on by one, and no gap is made up.
+TEST(AravisFrameNumbers, ACounterThatGoesBackStillGivesGrowingNumbers)
+{
+	FrameNumbers n;
+	EXPECT_EQ(n.next(5000), 5000u);
+	EXPECT_EQ(n.next(5001), 5001u);
+	EXPECT_EQ(n.next(1), 5002u);
+	EXPECT_EQ(n.next(2), 5003u);
+	EXPECT_EQ(n.next(65535), 5004u); // 2 -> 65535 is 2 steps back on the circle
+	EXPECT_EQ(n.next(0), 5005u);
+	EXPECT_EQ(n.next(1), 5006u);
+	EXPECT_EQ(n.unseen(), 0u);
+}
+
+// After a reconnection the camera counts afresh (the simulator from 65401 again): the
+// numbers continue, so the lent ids still only grow.
+TEST(AravisFrameNumbers, AReconnectionContinuesTheNumbers)
+{
+	FrameNumbers n;
+	n.restart(); // the first connection
+	EXPECT_EQ(n.next(65401), 65401u);
+	EXPECT_EQ(n.next(65420), 65420u);
+	n.restart();
+	EXPECT_EQ(n.next(65401), 65421u);
+	EXPECT_EQ(n.next(65403), 65423u);
+	EXPECT_EQ(n.unseen(), 18u + 1u) << "the gap across the reconnection is unknown, not counted";
+}
+
 TEST(AravisSource, UnknownCameraIsCameraNotFound)
 {
 	std::unique_ptr<AravisSource> src;
@@ -171,6 +264,7 @@ TEST(AravisSource, StreamsHundredFramesCleanlyThroughTheDetector)
 	Frame frame;
 	st = src->next(frame, 3000);
 	ASSERT_TRUE(st.ok()) << st.message();
+	const uint64_t firstId = frame.id;
 	uint64_t lastId = frame.id;
 	std::printf("[ first    ] incomplete before the first frame: %llu\n",
 		    (unsigned long long)src->stats().incomplete);
@@ -205,12 +299,50 @@ TEST(AravisSource, StreamsHundredFramesCleanlyThroughTheDetector)
 	EXPECT_EQ(t.missingPackets, 0u);
 	EXPECT_EQ(s.delivered, 101u);
 	EXPECT_EQ(allocations, 0) << "operator new calls while streaming 100 frames";
-	std::printf("[ stats    ] delivered %llu dropped %llu incomplete %llu timeouts %llu "
-		    "resent %llu missing packets %llu underruns %llu\n",
+	// A slow run (sanitizers, load) drops frames, and past 135 camera frames the
+	// simulator's 16-bit block ids wrap: the lent ids must still grow.
+	std::printf("[ stats    ] lent ids %llu..%llu: delivered %llu dropped %llu incomplete %llu "
+		    "timeouts %llu resent %llu missing packets %llu underruns %llu\n",
+		    (unsigned long long)firstId, (unsigned long long)lastId,
 		    (unsigned long long)s.delivered, (unsigned long long)s.dropped,
 		    (unsigned long long)s.incomplete, (unsigned long long)s.timeouts,
 		    (unsigned long long)t.resentPackets, (unsigned long long)t.missingPackets,
 		    (unsigned long long)t.underruns);
+}
+
+// The simulator's block ids start at 65401 and wrap from 65535 to 1 after 135 frames: the
+// lent ids keep growing through it (a consumer that names files or measures gaps by id
+// must never see them go back). About 1.5 s at 100 fps.
+TEST(AravisSource, LentIdsKeepGrowingAcrossTheBlockIdWrap)
+{
+	FakeGvCamera fake;
+	START_FAKE_CAMERA(fake, "127.0.0.1", 0);
+	std::unique_ptr<AravisSource> src;
+	AravisOptions options;
+	options.frameRate = 100;
+	ASSERT_TRUE(openCamera("127.0.0.1", "Mono8", options, src).ok());
+	ASSERT_TRUE(src->start().ok());
+	Frame frame;
+	ASSERT_TRUE(src->next(frame, 3000).ok());
+	const uint64_t first = frame.id;
+	uint64_t last = first;
+	int nonIncreasing = 0;
+	const auto deadline = Clock::now() + std::chrono::seconds(20);
+	while (last <= 65535 + 20 && Clock::now() < deadline) {
+		const Status st = src->next(frame, 2000);
+		ASSERT_TRUE(st.ok()) << st.message();
+		nonIncreasing += frame.id <= last;
+		last = frame.id;
+	}
+	src->stop();
+	const SourceStats s = src->stats();
+	std::printf("[ wrap     ] lent ids %llu..%llu: delivered %llu dropped %llu incomplete %llu\n",
+		    (unsigned long long)first, (unsigned long long)last, (unsigned long long)s.delivered,
+		    (unsigned long long)s.dropped, (unsigned long long)s.incomplete);
+	EXPECT_LE(first, 65535u) << "the simulator should start below the wrap";
+	EXPECT_GT(last, 65535u + 20) << "the stream should have crossed the wrap";
+	EXPECT_EQ(nonIncreasing, 0);
+	EXPECT_GE(s.delivered + s.dropped + s.incomplete, last - first + 1);
 }
 
 // A slow consumer: the newest frame is lent, older complete ones are counted as dropped.
@@ -465,11 +597,15 @@ TEST(AravisSource, PetsFramesThroughTheFakeCameraDetectLikeTheFileRun)
 	ASSERT_TRUE(st.ok()) << st.message();
 	ArvDevice *device = arv_camera_get_device(src->arvCamera());
 	ASSERT_TRUE(ARV_IS_FAKE_DEVICE(device));
+	// The Fake stream runs from open() on and fills every buffer it is given with its own
+	// pattern until ours is installed. A loaded machine can pause here for frames; the
+	// pause makes that certain: the port must not lend a frame made before start().
+	std::this_thread::sleep_for(std::chrono::milliseconds(200));
 	arv_fake_camera_set_fill_pattern(arv_fake_device_get_fake_camera(ARV_FAKE_DEVICE(device)),
 					 fillWithPets, &pets);
 	ASSERT_TRUE(src->start().ok());
 
-	int seen[kFrames] = { 0 }, unknown = 0, unknownLate = 0, mismatched = 0, lent = 0;
+	int seen[kFrames] = { 0 }, unknown = 0, mismatched = 0, lent = 0;
 	const size_t bytes = static_cast<size_t>(w) * h * 3;
 	const auto deadline = Clock::now() + std::chrono::seconds(20);
 	while (lent < 12 && Clock::now() < deadline) {
@@ -486,11 +622,7 @@ TEST(AravisSource, PetsFramesThroughTheFakeCameraDetectLikeTheFileRun)
 				k = i;
 		lent++;
 		if (k < 0) {
-			// Seen once in a loaded CI run: the second frame of the stream matched no
-			// PETS frame (the Fake camera filling before its geometry settled). Tolerated
-			// at the very start only; anywhere else it would be a torn, lent frame.
 			unknown++;
-			unknownLate += lent > 2;
 			continue;
 		}
 		seen[k]++;
@@ -500,8 +632,7 @@ TEST(AravisSource, PetsFramesThroughTheFakeCameraDetectLikeTheFileRun)
 	}
 	src->stop();
 	EXPECT_EQ(lent, 12);
-	EXPECT_EQ(unknownLate, 0) << "frames whose pixels are none of the PETS frames";
-	EXPECT_LE(unknown, 1);
+	EXPECT_EQ(unknown, 0) << "frames whose pixels are none of the PETS frames";
 	EXPECT_EQ(mismatched, 0) << "frames whose detections differ from the file run";
 	int distinct = 0;
 	for (int n : seen)

@@ -65,6 +65,14 @@ bool FakeGvCamera::start(const std::string &address, int lostPerThousand, std::s
 		error = "aravis-tools is not installed (no arv-fake-gv-camera-0.8 on PATH)";
 		return false;
 	}
+	// GVCP's port is fixed: a simulator of another test run (another build tree or
+	// worktree on this machine) would answer in place of ours, and our tests would fail
+	// in ways that look like port bugs.
+	if (listening(address)) {
+		error = "another process already serves GVCP on " + address +
+			":3956 (a simulator of another test run?): not starting a second one";
+		return false;
+	}
 	const std::string lost = std::to_string(lostPerThousand);
 	const char *argv[] = { binary.c_str(), "-i", address.c_str(), "-r", lost.c_str(), nullptr };
 	posix_spawn_file_actions_t actions;
