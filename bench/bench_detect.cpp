@@ -3,7 +3,7 @@
 // decoded first, then each is detected `--repeat` times; prints median and mean per
 // stage. Usage:
 //   bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--count N]
-//                [--repeat K] [--calib FILE [--calibrated]] [--format NAME]
+//                [--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--format NAME]
 // --format converts the decoded frames to a camera pixel format first (NV12, YUYV,
 // BayerRGGB8, ...: docs/pixel-formats.md), so the detector's input conversion is timed.
 #include <algorithm>
@@ -43,7 +43,7 @@ double mean(const std::vector<double> &v)
 int usage()
 {
 	std::fprintf(stderr, "usage: bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--count N] "
-			     "[--repeat K] [--calib FILE [--calibrated]] [--format NAME]\n");
+			     "[--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--format NAME]\n");
 	return 2;
 }
 
@@ -54,11 +54,11 @@ int main(int argc, char **argv)
 	std::string modelPath, framesDir, calibPath, formatName = "RGB8";
 	double resize = 1.0;
 	int count = 50, repeat = 1;
-	bool calibrated = false, resizeInPyramid = false;
+	bool calibrated = false, resizeInPyramid = false, calibratedPyramid = false;
 	for (int i = 1; i < argc; i++) {
 		const std::string a = argv[i];
-		if (a == "--calibrated" || a == "--resize-in-pyramid") {
-			(a == "--calibrated" ? calibrated : resizeInPyramid) = true;
+		if (a == "--calibrated" || a == "--resize-in-pyramid" || a == "--calibrated-pyramid") {
+			(a == "--calibrated" ? calibrated : a == "--resize-in-pyramid" ? resizeInPyramid : calibratedPyramid) = true;
 			continue;
 		}
 		if (i + 1 >= argc)
@@ -136,6 +136,7 @@ int main(int argc, char **argv)
 	cfg.maxHeight = frames[0].height;
 	cfg.resize = resize;
 	cfg.resizeInPyramid = resizeInPyramid;
+	cfg.calibratedPyramid = calibratedPyramid;
 	CameraModel camera;
 	if (!calibPath.empty()) {
 		std::vector<uint8_t> text;

@@ -83,6 +83,7 @@ bool createDetector(const LiveOptions &options, int width, int height, DetectorS
 	config.maxHeight = height;
 	config.resize = options.resize;
 	config.resizeInPyramid = options.resizeInPyramid;
+	config.calibratedPyramid = options.calibratedPyramid;
 	config.staticRejection.enabled = options.rejectStatic;
 	config.camera = setup.hasCamera ? &setup.camera : nullptr;
 	config.method = options.calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;

@@ -40,7 +40,8 @@ namespace {
 bool split(int argc, const char *const *argv, const std::vector<std::string> &flags,
 	   const std::vector<std::string> *valued, std::vector<Arg> &out, std::string &error)
 {
-	static const char *const kCommonFlags[] = { "--quiet", "--resize-in-pyramid", "--reject-static",
+	static const char *const kCommonFlags[] = { "--quiet", "--resize-in-pyramid",
+						    "--calibrated-pyramid", "--reject-static",
 						    "--help", "-h" };
 	static const char *const kCommonValued[] = { "--model", "--calib", "--method", "--resize",
 						     "--min-height", "--max-height", "--overlay",
@@ -111,6 +112,8 @@ ParseResult parseLiveOption(const Arg &arg, LiveOptions &out, std::string &error
 		out.help = true;
 	} else if (n == "--resize-in-pyramid") {
 		out.resizeInPyramid = true;
+	} else if (n == "--calibrated-pyramid") {
+		out.calibratedPyramid = true;
 	} else if (n == "--reject-static") {
 		out.rejectStatic = true;
 	} else if (n == "--quiet") {
@@ -193,6 +196,7 @@ const char *liveUsageText()
 	       "  --method M          generic (default) or calibrated (needs --calib)\n"
 	       "  --resize R          upscale frames by R before detecting, 0 < R <= 8 (default 1)\n"
 	       "  --resize-in-pyramid do the resize (>= 1) inside the feature pyramid (faster)\n"
+	       "  --calibrated-pyramid calibrated: channels at levels placed among the needed ones\n"
 	       "  --reject-static     drop detections on static scene structure\n"
 	       "  --min-height H      smallest plausible person, metres (default 1.4)\n"
 	       "  --max-height H      tallest plausible person, metres (default 2.2)\n"

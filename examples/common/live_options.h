@@ -16,6 +16,7 @@ struct LiveOptions {
 	bool calibrated = false;   // --method calibrated
 	double resize = 1.0;       // --resize R
 	bool resizeInPyramid = false; // --resize-in-pyramid
+	bool calibratedPyramid = false; // --calibrated-pyramid
 	bool rejectStatic = false;    // --reject-static
 	double minHeight = 1.4;    // --min-height H, metres
 	double maxHeight = 2.2;    // --max-height H, metres

@@ -137,8 +137,11 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 	cfg.method = DetectionMethod::Calibrated;
 	cfg.camera = &camera;
 	cfg.cascadeThreshold = -10.0f;
-	for (bool inPyramid : { false, true }) {
-		cfg.resizeInPyramid = inPyramid;
+	// The resized frame, the resize inside the pyramid, and levels placed among the needed
+	// ones (DetectorConfig::calibratedPyramid, which needs the resize in the pyramid).
+	for (int variant = 0; variant < 3; variant++) {
+		cfg.resizeInPyramid = variant > 0;
+		cfg.calibratedPyramid = variant == 2;
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(test::randomModel(7, 512), cfg, det).ok());
 		std::vector<std::vector<uint8_t>> frames;
@@ -146,9 +149,10 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 			frames.push_back(test::randomImage(s, 320, 240));
 		int detections = 0;
 		EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0);
-		std::printf("calibrated, resize 2%s: %d detections, %llu windows in the last frame, 0 "
+		std::printf("calibrated, resize 2%s%s: %d detections, %llu windows in the last frame, 0 "
 			    "allocations\n",
-			    inPyramid ? " in the pyramid" : "", detections,
+			    cfg.resizeInPyramid ? " in the pyramid" : "",
+			    cfg.calibratedPyramid ? ", placed levels" : "", detections,
 			    (unsigned long long)det->lastStats().windows);
 		EXPECT_GT(det->lastStats().windows, 0u);
 	}

@@ -3,6 +3,7 @@
 // plan's world-height test, and calibrated against generic detection on PETS.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -203,6 +204,109 @@ TEST(CalibratedDetector, PetsFewerWindowsSameDetections)
 	EXPECT_LT(windowsCalibrated * 3, windowsGeneric);
 	EXPECT_GT(strong, 0);
 	EXPECT_GE(kept, strong * 9 / 10);
+}
+
+TEST(CalibratedDetector, PlacedPyramidNeedsCalibratedMethodAndNoFrameResize)
+{
+	const CameraModel camera = levelCamera(600, 320, 120);
+	DetectorConfig cfg;
+	cfg.maxWidth = 640;
+	cfg.maxHeight = 480;
+	cfg.camera = &camera;
+	cfg.calibratedPyramid = true;
+	std::unique_ptr<Detector> det;
+	Status st = Detector::create(test::randomModel(1), cfg, det); // generic method
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("calibrated method"), std::string::npos) << st.message();
+	cfg.method = DetectionMethod::Calibrated;
+	cfg.resize = 2.0;
+	st = Detector::create(test::randomModel(1), cfg, det); // the frame would be resized
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("resizeInPyramid"), std::string::npos) << st.message();
+	cfg.resizeInPyramid = true;
+	EXPECT_TRUE(Detector::create(test::randomModel(1), cfg, det).ok());
+}
+
+float iou(const Detection &a, const Detection &b)
+{
+	const float w = std::min(a.x + a.w, b.x + b.w) - std::max(a.x, b.x);
+	const float h = std::min(a.y + a.h, b.y + b.h) - std::max(a.y, b.y);
+	if (w <= 0 || h <= 0)
+		return 0;
+	return w * h / (a.w * a.h + b.w * b.h - w * h);
+}
+
+// Detections of `a` scoring at least minScore that `b` has at IoU >= 0.5.
+int matched(const std::vector<Detection> &a, const std::vector<Detection> &b, float minScore,
+	    int &total)
+{
+	int n = 0;
+	for (const Detection &d : a) {
+		if (d.score < minScore)
+			continue;
+		total++;
+		for (const Detection &e : b)
+			if (iou(d, e) >= 0.5f) {
+				n++;
+				break;
+			}
+	}
+	return n;
+}
+
+TEST(CalibratedDetector, PetsPlacedPyramidComputesLessFindsTheSamePeople)
+{
+	const std::string shared = test::sharedDir();
+	const std::string blobPath = test::inriaModelBlob();
+	if (shared.empty() || blobPath.empty() || test::petsFrame(10).empty())
+		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
+	std::vector<uint8_t> blob, xml;
+	ASSERT_TRUE(test::readFile(blobPath, blob));
+	ASSERT_TRUE(test::readFile(shared + "/data/pets2009-s2l1/View_001.xml", xml));
+	Model model;
+	ASSERT_TRUE(loadModel(blob.data(), blob.size(), model).ok());
+	CameraModel camera;
+	ASSERT_TRUE(loadCalibration(reinterpret_cast<const char *>(xml.data()), xml.size(), "View_001.xml", camera).ok());
+
+	DetectorConfig cfg;
+	cfg.maxWidth = 768;
+	cfg.maxHeight = 576;
+	cfg.resize = 2.0;
+	cfg.resizeInPyramid = true;
+	cfg.camera = &camera;
+	cfg.method = DetectionMethod::Calibrated;
+	std::unique_ptr<Detector> octaves, placed;
+	ASSERT_TRUE(Detector::create(model, cfg, octaves).ok());
+	cfg.calibratedPyramid = true;
+	ASSERT_TRUE(Detector::create(model, cfg, placed).ok());
+
+	int totalO = 0, totalP = 0, foundO = 0, foundP = 0, computedO = 0, computedP = 0;
+	uint64_t windowsO = 0, windowsP = 0;
+	for (int k = 1; k <= 10; k++) {
+		test::RgbImage img;
+		ASSERT_TRUE(test::loadRgb(test::petsFrame(k), img));
+		const ImageView v = ImageView::rgb8(img.pixels.data(), img.width, img.height);
+		Detections d;
+		ASSERT_TRUE(octaves->detect(v, d).ok());
+		const std::vector<Detection> o(d.begin(), d.end());
+		ASSERT_TRUE(placed->detect(v, d).ok());
+		const std::vector<Detection> p(d.begin(), d.end());
+		computedO = octaves->lastStats().computedLevels;
+		computedP = placed->lastStats().computedLevels;
+		windowsO += octaves->lastStats().windows;
+		windowsP += placed->lastStats().windows;
+		// Strong detections of either pyramid, found by the other.
+		foundO += matched(o, p, 40, totalO);
+		foundP += matched(p, o, 40, totalP);
+	}
+	std::printf("PETS frames 1-10, resize 2 in the pyramid: computed levels %d (octaves) vs %d "
+		    "(placed), windows/frame %.0f vs %.0f; strong detections found by the other: "
+		    "%d of %d, %d of %d\n",
+		    computedO, computedP, windowsO / 10.0, windowsP / 10.0, foundO, totalO, foundP, totalP);
+	EXPECT_LT(computedP, computedO);
+	EXPECT_GT(totalO, 20);
+	EXPECT_GE(foundO, totalO * 9 / 10);
+	EXPECT_GE(foundP, totalP * 9 / 10);
 }
 
 TEST(CalibratedDetector, LowCamerasStayCheaperThanGeneric)

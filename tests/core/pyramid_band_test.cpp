@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pixel_formats.h"
+#include "pyramid/placement.h"
 #include "pyramid/pyramid.h"
 #include "synthetic.h"
 
@@ -37,7 +38,7 @@ void checkLevelRows(const LevelChannels &full, const LevelChannels &part, const 
 }
 
 void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
-		  PixelFormat format = PixelFormat::RGB8)
+		  PixelFormat format = PixelFormat::RGB8, bool placed = false)
 {
 	ModelParams p; // the INRIA model's options
 	Pyramid full, banded;
@@ -48,9 +49,8 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 	FrameInput input;
 	ASSERT_TRUE(input.init(width, height, false).ok());
 	ASSERT_TRUE(checkImageLayout(image.view()).ok());
-	input.begin(image.view());
-	ASSERT_TRUE(full.build(input).ok());
-	const ScaleList &scales = full.scales();
+	ScaleList scales;
+	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
 
 	// Random bands: empty, touching the top or bottom, one row, interior, whole level.
 	std::mt19937 rng(seed);
@@ -71,6 +71,18 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 			b = -3, e = h + 5; // beyond the level: clipped
 		bands[i] = RowBand{ b, e };
 	}
+	if (placed) {
+		// Both pyramids compute the levels placed for these bands.
+		int source[kMaxLevels];
+		ASSERT_TRUE(chooseComputedLevels(p, scales, bands, full.channelMargin(), source));
+		ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
+		ASSERT_TRUE(banded.placeComputedLevels(source, scales.count).ok());
+		applyComputedLevels(scales, source);
+	}
+	input.begin(image.view());
+	ASSERT_TRUE(full.build(input).ok());
+	for (int i = 0; i < scales.count; i++)
+		ASSERT_EQ(full.scales().levels[i].source, scales.levels[i].source) << "level " << i;
 	input.begin(image.view());
 	ASSERT_TRUE(banded.build(input, bands).ok());
 	ASSERT_EQ(banded.scales().count, scales.count);
@@ -100,6 +112,47 @@ TEST(PyramidBands, RowsEqualTheFullPyramidUpscaled)
 	// At resize 2 the first octave is the largest image: the calibrated mode's main case.
 	const int width = 2 * 160, height = 2 * 124;
 	compareBands(test::randomImage(9, width, height), width, height, 5);
+}
+
+TEST(PyramidBands, RowsEqualTheFullPyramidWithPlacedLevels)
+{
+	// DetectorConfig::calibratedPyramid: computed levels among the needed ones, at scales
+	// that are no octave of the image, some approximated by upsampling.
+	const int width = 2 * 160 + 1, height = 2 * 124 - 1;
+	for (uint32_t seed = 1; seed <= 6; seed++) {
+		SCOPED_TRACE(seed);
+		compareBands(test::randomImage(30 + seed, width, height), width, height, seed * 13,
+			     PixelFormat::RGB8, true);
+	}
+}
+
+TEST(PyramidBands, PlacementIsCheckedAndSizedForTheMaximumFrame)
+{
+	ModelParams p;
+	Pyramid pyr;
+	ASSERT_TRUE(pyr.init(p, 200, 150).ok());
+	ScaleList scales;
+	ASSERT_TRUE(pyr.scalesFor(200, 150, scales).ok());
+	int source[kMaxLevels];
+	for (int i = 0; i < scales.count; i++)
+		source[i] = 1; // every level from level 1, computed
+	EXPECT_TRUE(pyr.placeComputedLevels(source, scales.count).ok());
+	source[1] = 0; // level 1 from level 0, which is not computed
+	EXPECT_EQ(pyr.placeComputedLevels(source, scales.count).code(), ErrorCode::InvalidArgument);
+	EXPECT_EQ(pyr.placeComputedLevels(source, scales.count + 1).code(), ErrorCode::InvalidArgument);
+	// Every level computed: the channel store grows at setup to hold them all.
+	for (int i = 0; i < scales.count; i++)
+		source[i] = i;
+	ASSERT_TRUE(pyr.placeComputedLevels(source, scales.count).ok());
+	const std::vector<uint8_t> rgb = test::randomImage(4, 200, 150);
+	ASSERT_TRUE(pyr.build(rgb.data(), 3 * 200, 200, 150).ok());
+	EXPECT_EQ(pyr.computedCount, scales.count);
+	// Another frame size keeps the toolbox's octaves.
+	ASSERT_TRUE(pyr.build(rgb.data(), 3 * 200, 180, 150).ok());
+	EXPECT_LT(pyr.computedCount, pyr.scales().count);
+	EXPECT_TRUE(pyr.placeComputedLevels(nullptr, 0).ok());
+	ASSERT_TRUE(pyr.build(rgb.data(), 3 * 200, 200, 150).ok());
+	EXPECT_LT(pyr.computedCount, scales.count);
 }
 
 TEST(PyramidBands, RowsEqualTheFullPyramidFromCameraFormats)

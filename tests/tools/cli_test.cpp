@@ -424,6 +424,15 @@ TEST_F(CliRunTest, ResizeInsideThePyramid)
 	EXPECT_NE(r.err.find("pyramid"), std::string::npos) << r.err;
 }
 
+TEST_F(CliRunTest, PlacedPyramidIsForTheCalibratedMethod)
+{
+	// --calibrated-pyramid places computed levels from a calibration's plan: without the
+	// calibrated method it is refused by name, with a one-line error.
+	ProcessResult r = detect({ "--model", model_, "--calibrated-pyramid", path("frames/a.png") });
+	expectOneLineError(r, 1);
+	EXPECT_NE(r.err.find("calibrated method"), std::string::npos) << r.err;
+}
+
 TEST_F(CliRunTest, OverlaysEveryKthFrameAsRgb)
 {
 	ProcessResult r = detect({ "--model", model_, "--overlay", path("ov/deep"), "--overlay-every", "2",

@@ -81,6 +81,7 @@ int run(const Options &opt)
 	config.maxHeight = maxH;
 	config.resize = opt.resize;
 	config.resizeInPyramid = opt.resizeInPyramid;
+	config.calibratedPyramid = opt.calibratedPyramid;
 	config.staticRejection.enabled = opt.rejectStatic;
 	config.disableNms = opt.noNms;
 	config.boxVoting = !opt.noBoxVoting;

@@ -52,6 +52,8 @@ const char *usageText()
 	       "  --resize R          upscale each frame by R before detecting, 0 < R <= 8 (default 1)\n"
 	       "  --resize-in-pyramid do the resize (>= 1) inside the feature pyramid instead\n"
 	       "                      (the toolbox's nOctUp; faster, docs/cli.md)\n"
+	       "  --calibrated-pyramid with --method calibrated: compute channels at levels placed\n"
+	       "                      among the needed ones (needs --resize-in-pyramid or resize 1)\n"
 	       "  --csv FILE          write detections as CSV: frame,x,y,w,h,score\n"
 	       "  --jsonl FILE|-      write one JSON object per frame (- for standard output)\n"
 	       "  --overlay DIR       write DIR/NNNNNN.png with the detections drawn in green\n"
@@ -109,6 +111,7 @@ bool parseOptions(int argc, const char *const *argv, Options &out, std::string &
 			     : name == "--quiet"             ? &out.quiet
 			     : name == "--no-box-voting"     ? &out.noBoxVoting
 			     : name == "--resize-in-pyramid" ? &out.resizeInPyramid
+			     : name == "--calibrated-pyramid" ? &out.calibratedPyramid
 			     : name == "--reject-static"     ? &out.rejectStatic
 							     : nullptr;
 		if (flag) {

@@ -18,6 +18,7 @@ struct Options {
 	bool noNms = false;
 	bool noBoxVoting = false;
 	bool resizeInPyramid = false;
+	bool calibratedPyramid = false;
 	bool rejectStatic = false;
 	std::string calibPath;         // calibration file (any format calibration.h reads)
 	bool calibrated = false;       // --method calibrated

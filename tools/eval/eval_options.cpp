@@ -27,7 +27,8 @@ const char *evalUsageText()
 	       "                   [--calib FILE] [--methods generic[,calibrated]] [--resizes 1.5,2.0,2.5]\n"
 	       "                   [--json FILE] [--dets DIR] [--plots DIR] [--overlays DIR]\n"
 	       "                   [--overlay-frames 1,200,400,600] [--overlay-score S] [--markdown FILE]\n"
-	       "                   [--resize-in-pyramid] [--max-frames N] [--jobs N] [--quiet]\n"
+	       "                   [--resize-in-pyramid] [--calibrated-pyramid] [--max-frames N]\n"
+	       "                   [--jobs N] [--quiet]\n"
 	       "       calped-eval --score-only DETS.csv[,DETS.csv...] --gt FILE\n"
 	       "                   (--frames DIR | --num-frames N) [--label NAME] [--json FILE] [--plots DIR]\n"
 	       "\n"
@@ -49,6 +50,8 @@ const char *evalUsageText()
 	       "  --resizes LIST        input resizes (default 1.0)\n"
 	       "  --resize-in-pyramid   resize inside the feature pyramid (the toolbox's nOctUp)\n"
 	       "                        instead of resampling each frame first; resizes >= 1\n"
+	       "  --calibrated-pyramid  calibrated methods compute channels at levels placed among\n"
+	       "                        the needed ones instead of the toolbox's octaves\n"
 	       "  --json FILE           one JSON object per (method, resize)\n"
 	       "  --dets DIR            DIR/<method>_r<resize>.csv: frame,x,y,w,h,score\n"
 	       "  --plots DIR           TPR-vs-FPPF and stage-time PNG plots (needs gnuplot)\n"
@@ -75,8 +78,10 @@ bool parseEvalOptions(int argc, const char *const *argv, EvalOptions &out, std::
 			out.help = true;
 			return true;
 		}
-		if (arg == "--quiet" || arg == "--resize-in-pyramid") {
-			(arg == "--quiet" ? out.quiet : out.resizeInPyramid) = true;
+		if (arg == "--quiet" || arg == "--resize-in-pyramid" || arg == "--calibrated-pyramid") {
+			(arg == "--quiet" ? out.quiet
+			 : arg == "--resize-in-pyramid" ? out.resizeInPyramid
+							 : out.calibratedPyramid) = true;
 			continue;
 		}
 		std::string value;

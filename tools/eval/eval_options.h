@@ -29,6 +29,7 @@ struct EvalOptions {
 	std::vector<std::string> scoreOnly; // detection CSVs to score instead of running
 	std::string label;                  // method name for a single --score-only file
 	bool resizeInPyramid = false; // DetectorConfig::resizeInPyramid for every run
+	bool calibratedPyramid = false; // DetectorConfig::calibratedPyramid, calibrated runs
 	bool quiet = false;
 	bool help = false;
 };

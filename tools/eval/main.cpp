@@ -204,6 +204,7 @@ int run(const EvalOptions &opt)
 	settings.overlayFrames = opt.overlayFrames;
 	settings.overlayScore = opt.overlayScore;
 	settings.resizeInPyramid = opt.resizeInPyramid;
+	settings.calibratedPyramid = opt.calibratedPyramid;
 	settings.quiet = opt.quiet;
 	notice(opt, std::to_string(specs.size()) + " run(s), " +
 			    (input.isVideo() ? "video " + input.video

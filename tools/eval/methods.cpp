@@ -86,6 +86,7 @@ private:
 		config.method = DetectionMethod::Calibrated;
 		config.camera = &m->camera_;
 		config.staticRejection.enabled = rejectStatic;
+		config.calibratedPyramid = setup.calibratedPyramid;
 		if (!m->setUp(setup, config, error))
 			return false;
 		out = std::move(m);

@@ -18,6 +18,7 @@ struct MethodSetup {
 	int maxWidth = 0, maxHeight = 0;
 	double resize = 1.0;
 	bool resizeInPyramid = false;
+	bool calibratedPyramid = false; // calibrated methods only
 };
 
 // A detector as the harness drives it: one frame in, detections and the detector's own

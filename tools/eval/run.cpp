@@ -51,6 +51,7 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 	setup.maxHeight = s.input->height;
 	setup.resize = resize;
 	setup.resizeInPyramid = s.resizeInPyramid;
+	setup.calibratedPyramid = s.calibratedPyramid;
 	std::unique_ptr<Method> method;
 	if (!entry.create(setup, method, error))
 		return false;

@@ -59,6 +59,7 @@ struct RunSettings {
 	std::vector<long> overlayFrames;
 	double overlayScore = 0;
 	bool resizeInPyramid = false;
+	bool calibratedPyramid = false;
 	bool quiet = false;
 };
 

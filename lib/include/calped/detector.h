@@ -77,6 +77,13 @@ struct DetectorConfig {
 	// score^4-weighted mean of the windows overlapping it (IoU > 0.6), which places it
 	// better than the single best window (docs/calibrated.md). Off: the thesis's boxes.
 	bool boxVoting = true;
+	// Calibrated mode, beyond the thesis and the toolbox: compute channels at pyramid
+	// levels chosen among the needed ones instead of at octaves of the frame, each
+	// approximated level no further from its computed level than the toolbox allows (half
+	// an octave), placed where the row bands cost the fewest pixels. Much less work when
+	// the needed levels start below an octave; the detections differ slightly from the
+	// toolbox pyramid's. Calibrated method only. docs/calibrated.md.
+	bool calibratedPyramid = false;
 	// Either method: drop detections on static scene structure (off by default).
 	StaticRejection staticRejection;
 };

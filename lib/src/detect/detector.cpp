@@ -8,6 +8,7 @@
 
 #include "detect/detector_impl.h"
 #include "detect/nms.h"
+#include "pyramid/placement.h"
 
 namespace calped {
 
@@ -94,6 +95,13 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 		if (!st.ok())
 			return st;
 	}
+	if (cfg.calibratedPyramid && cfg.method != DetectionMethod::Calibrated)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "calibratedPyramid places levels for the calibrated method only");
+	// Placed levels are resampled from the frame: resizing it first would only add work.
+	if (cfg.calibratedPyramid && frameResize_ != 1.0)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "calibratedPyramid with resize %g needs resizeInPyramid", cfg.resize);
 	if (cfg.method == DetectionMethod::Calibrated)
 		return initCalibrated();
 	return Status::success();
@@ -117,6 +125,14 @@ Status DetectorImpl::initCalibrated()
 	for (int i = 0; i < scales.count; i++) {
 		levelNeeded_[i] = plan_.levelNeeded(i);
 		levelRows_[i] = plan_.levelRows(i);
+	}
+	if (config.calibratedPyramid) {
+		int source[kMaxLevels];
+		if (chooseComputedLevels(params_, scales, levelRows_, pyramid.channelMargin(), source)) {
+			st = pyramid.placeComputedLevels(source, scales.count);
+			if (!st.ok())
+				return st;
+		}
 	}
 	if (config.denseRegionPersistence < 1 || config.maxDenseRegions < 1)
 		return Status::error(ErrorCode::InvalidArgument,

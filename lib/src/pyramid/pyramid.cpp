@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "pyramid/pyramid.h"
 
+#include "pyramid/placement.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -56,6 +58,9 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 				     "softBin %d: calped implements 0 and -2 (no spatial interpolation)",
 				     int(params.softBin));
 	params_ = params;
+	maxWidth_ = maxWidth;
+	maxHeight_ = maxHeight;
+	placedCount_ = 0;
 	padH_ = params.padH / params.shrink;
 	padW_ = params.padW / params.shrink;
 	// A band of a level's LUV image gives exact channels in its rows but the margin: the
@@ -109,6 +114,44 @@ Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
 		return Status::error(ErrorCode::ImageTooSmall,
 				     "%dx%d is smaller than the model's minimum %gx%g", width, height,
 				     double(params_.minDsW), double(params_.minDsH));
+	if (placedCount_ > 0 && width == maxWidth_ && height == maxHeight_ && out.count == placedCount_)
+		applyComputedLevels(out, placedSource_);
+	return Status::success();
+}
+
+Status Pyramid::placeComputedLevels(const int *source, int count)
+{
+	placedCount_ = 0;
+	if (!source)
+		return Status::success();
+	ScaleList scales;
+	Status st = scalesFor(maxWidth_, maxHeight_, scales);
+	if (!st.ok())
+		return st;
+	if (count != scales.count)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "placement for %d levels, the pyramid has %d", count, scales.count);
+	for (int i = 0; i < count; i++) {
+		const int s = source[i];
+		if (s < 0 || s >= count || source[s] != s)
+			return Status::error(ErrorCode::InvalidArgument,
+					     "level %d is approximated from level %d, which is not computed",
+					     i, s);
+	}
+	applyComputedLevels(scales, source);
+	// The channel store holds every computed level, each in its place.
+	size_t need = 0;
+	for (int i = 0; i < count; i++)
+		if (scales.levels[i].computed)
+			need += size_t(kChannelCount) * scales.levels[i].width * scales.levels[i].height;
+	try {
+		if (need > realStore_.size())
+			realStore_.assign(need, 0);
+	} catch (const std::bad_alloc &) {
+		return Status::error(ErrorCode::OutOfMemory, "channels of the placed levels");
+	}
+	std::copy(source, source + count, placedSource_);
+	placedCount_ = count;
 	return Status::success();
 }
 

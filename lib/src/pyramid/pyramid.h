@@ -55,6 +55,15 @@ public:
 	// The scale list build() will use for an image of this size (for setup).
 	Status scalesFor(int width, int height, ScaleList &out) const;
 
+	// Compute the channels of other levels than the toolbox's octaves (placement.h):
+	// source[i] is the computed level that level i is approximated from (i itself when
+	// computed), for the scale list of maxWidth x maxHeight images; other sizes keep
+	// the toolbox's. Setup time: may grow the channel store. nullptr restores the
+	// toolbox's placement.
+	Status placeComputedLevels(const int *source, int count);
+	// LUV rows a computed level's channels need beyond its channel rows (each side).
+	int channelMargin() const { return channelMargin_; }
+
 	const ScaleList &scales() const { return scales_; }
 
 	// Smooth and pad level i (computing it by approximation first if needed), in the
@@ -98,6 +107,10 @@ private:
 	int halfLevel_ = -1; // the computed level at scale 1/2, source of smaller octaves
 	int channelMargin_ = 8;
 	int width_ = 0, height_ = 0;
+	int maxWidth_ = 0, maxHeight_ = 0;
+	// placeComputedLevels(): sources for the maximum frame size's levels, if set.
+	int placedCount_ = 0;
+	int placedSource_[kMaxLevels] = {};
 	int padH_ = 0, padW_ = 0;
 
 	PlaneBuffer<uint16_t> luv_[3];      // whole image in LUV

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// DetectorConfig::calibratedPyramid: computed levels placed among the needed ones. Every
+// needed level must be served from a computed level within the toolbox's reach, and the
+// placement must never compute more pixels than the toolbox's octaves for the same bands.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+
+#include "pyramid/placement.h"
+
+namespace calped {
+namespace {
+
+constexpr int kMargin = 8; // the INRIA model's channel margin (Pyramid::channelMargin)
+
+ScaleList scalesOf(const ModelParams &p, int width, int height, double upscale)
+{
+	ScaleList s;
+	EXPECT_TRUE(computeScales(p, height, width, s, upscale));
+	return s;
+}
+
+void checkPlacement(const ModelParams &p, const ScaleList &scales, const RowBand *bands,
+		    const int *source)
+{
+	const int reach = approximationReach(p);
+	for (int i = 0; i < scales.count; i++) {
+		const int s = source[i];
+		ASSERT_GE(s, 0) << "level " << i;
+		ASSERT_LT(s, scales.count);
+		EXPECT_EQ(source[s], s) << "level " << i << " comes from level " << s << ", not computed";
+		const bool needed = !bands[i].clipped(scales.levels[i].height).empty();
+		if (needed) {
+			EXPECT_LE(std::abs(i - s), reach) << "level " << i << " from level " << s;
+		}
+	}
+}
+
+TEST(Placement, ReachIsHalfTheToolboxSpacing)
+{
+	ModelParams p;
+	EXPECT_EQ(approximationReach(p), 4); // INRIA: nApprox 7, computed levels 8 apart
+	p.nApprox = 3;
+	EXPECT_EQ(approximationReach(p), 2);
+}
+
+TEST(Placement, PetsLikeBandsComputeFarFewerPixels)
+{
+	// The shape the calibrated mode gives at resize 2 on a camera looking down at a
+	// square: the 16 largest levels are needed, each in a band that moves down the
+	// image as the scale falls (nearer people are lower and larger), the rest not at all.
+	ModelParams p;
+	ScaleList scales = scalesOf(p, 768, 576, 2.0);
+	ASSERT_GE(scales.count, 20);
+	RowBand bands[kMaxLevels];
+	for (int i = 0; i < 16; i++) {
+		const int h = scales.levels[i].height;
+		bands[i] = RowBand{ h / 24 + i, h * 2 / 5 + 3 * i }.clipped(h);
+	}
+	const double octaves = computedPixels(p, scales, bands, kMargin);
+	int source[kMaxLevels];
+	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, source));
+	checkPlacement(p, scales, bands, source);
+	applyComputedLevels(scales, source);
+	const double placed = computedPixels(p, scales, bands, kMargin);
+	int computed = 0;
+	for (int i = 0; i < scales.count; i++)
+		computed += scales.levels[i].computed;
+	std::printf("PETS-like bands: octaves %.2f M channel pixels, placed %.2f M (%d computed levels)\n",
+		    octaves / 1e6, placed / 1e6, computed);
+	EXPECT_LT(placed, 0.75 * octaves);
+	EXPECT_LE(computed, 2);
+	for (int i = 16; i < scales.count; i++)
+		EXPECT_FALSE(scales.levels[i].computed) << "level " << i << " is needed by nobody";
+}
+
+TEST(Placement, NeverMoreThanTheOctavesForRandomBands)
+{
+	ModelParams p;
+	const ScaleList base = scalesOf(p, 331, 247, 1.5);
+	std::mt19937 rng(11);
+	for (int trial = 0; trial < 200; trial++) {
+		SCOPED_TRACE(trial);
+		RowBand bands[kMaxLevels];
+		for (int i = 0; i < base.count; i++) {
+			const int h = base.levels[i].height;
+			const int b = int(rng() % h), e = b + 1 + int(rng() % h);
+			bands[i] = rng() % 3 == 0 ? RowBand() : RowBand{ b, e };
+		}
+		int source[kMaxLevels];
+		if (!chooseComputedLevels(p, base, bands, kMargin, source)) {
+			for (int i = 0; i < base.count; i++)
+				ASSERT_TRUE(bands[i].clipped(base.levels[i].height).empty());
+			continue;
+		}
+		checkPlacement(p, base, bands, source);
+		ScaleList placed = base;
+		applyComputedLevels(placed, source);
+		// The toolbox's placement is one of those searched; each computed level also
+		// counts 1024 pixels there, so fewer levels may win by that much.
+		EXPECT_LE(computedPixels(p, placed, bands, kMargin),
+			  computedPixels(p, base, bands, kMargin) + 1024.0 * base.count);
+	}
+}
+
+TEST(Placement, NothingNeededOrEveryLevelComputedKeepsTheToolbox)
+{
+	ModelParams p;
+	const ScaleList scales = scalesOf(p, 320, 240, 1.0);
+	RowBand none[kMaxLevels];
+	int source[kMaxLevels];
+	EXPECT_FALSE(chooseComputedLevels(p, scales, none, kMargin, source));
+	RowBand all[kMaxLevels];
+	for (int i = 0; i < scales.count; i++)
+		all[i] = RowBand{ 0, scales.levels[i].height };
+	p.nApprox = 0;
+	EXPECT_FALSE(chooseComputedLevels(p, scales, all, kMargin, source));
+}
+
+} // namespace
+} // namespace calped
