@@ -16,6 +16,7 @@ namespace {
 constexpr int kChunk = 64; // blocks planned at a time (bounded stack use)
 
 struct BlockPlan {
+	int32_t x0;          // first output of the block
 	int32_t base;        // first source sample of the block, or -1: not planned
 	int32_t index[3][8]; // per tap: source sample - base, in [0, 16)
 	int32_t weight[3][8];
@@ -23,16 +24,21 @@ struct BlockPlan {
 
 bool planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
 {
-	const int base = taps[x0].first;
+	// The 16 samples start at the block's first tap, or earlier at the right edge so
+	// that they stay inside the row.
+	const int base = std::min(taps[x0].first, srcWidth - 16);
+	if (base < 0)
+		return false;
 	for (int i = 0; i < 8; i++) {
 		const ResampleTap &t = taps[x0 + i];
-		if (t.count > 3 || t.first < base || t.first + t.count - base > 16 || base + 16 > srcWidth)
+		if (t.count > 3 || t.first < base || t.first + t.count - base > 16)
 			return false;
 		for (int j = 0; j < 3; j++) {
 			p.index[j][i] = j < t.count ? t.first + j - base : t.first - base;
 			p.weight[j][i] = j < t.count ? t.weight[j] : 0;
 		}
 	}
+	p.x0 = x0;
 	p.base = base;
 	return true;
 }
@@ -43,6 +49,14 @@ inline __m256i pick(__m256i lo, __m256i hi, __m256i index)
 	const __m256i fromLo = _mm256_permutevar8x32_epi32(lo, index);
 	const __m256i fromHi = _mm256_permutevar8x32_epi32(hi, index);
 	return _mm256_blendv_epi8(fromLo, fromHi, _mm256_cmpgt_epi32(index, _mm256_set1_epi32(7)));
+}
+
+inline uint32_t tapSum(const ResampleTap &t, const uint16_t *in)
+{
+	uint32_t acc = 0;
+	for (int j = 0; j < t.count; j++)
+		acc += uint32_t(t.weight[j]) * in[t.first + j];
+	return acc;
 }
 
 bool isHalving(const ResampleTap *taps, int dstWidth)
@@ -85,28 +99,31 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 		halveRows(src, srcStride, srcHeight, dstWidth, tmp, tmpStride);
 		return;
 	}
-	BlockPlan plans[kChunk];
+	BlockPlan plans[kChunk + 1];
 	const __m256i half = _mm256_set1_epi32(1 << (kQ - 1)), max = _mm256_set1_epi32(65535);
 	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
-		const int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
+		int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
+		const int end = std::min(dstWidth, chunk + 8 * kChunk);
 		for (int b = 0; b < blocks; b++)
 			if (!planBlock(xTaps, chunk + 8 * b, srcWidth, plans[b]))
-				plans[b].base = -1;
-		const int end = std::min(dstWidth, chunk + 8 * kChunk);
+				plans[b] = BlockPlan{ chunk + 8 * b, -1, {}, {} };
+		// The last few outputs: one more block ending at the row's end, overlapping
+		// the one before (it writes the same values there), or one sample at a time.
+		const int tail = chunk + 8 * blocks;
+		bool scalarTail = tail < end;
+		if (scalarTail && dstWidth >= 8 && planBlock(xTaps, dstWidth - 8, srcWidth, plans[blocks])) {
+			blocks++;
+			scalarTail = false;
+		}
 		for (int y = 0; y < srcHeight; y++) {
 			const uint16_t *in = src + y * srcStride;
 			uint16_t *out = tmp + y * tmpStride;
 			for (int b = 0; b < blocks; b++) {
 				const BlockPlan &p = plans[b];
-				const int x0 = chunk + 8 * b;
+				const int x0 = p.x0;
 				if (p.base < 0) {
-					for (int x = x0; x < x0 + 8; x++) {
-						const ResampleTap &t = xTaps[x];
-						uint32_t acc = 0;
-						for (int j = 0; j < t.count; j++)
-							acc += uint32_t(t.weight[j]) * in[t.first + j];
-						out[x] = roundQ14(acc);
-					}
+					for (int x = x0; x < x0 + 8; x++)
+						out[x] = roundQ14(tapSum(xTaps[x], in));
 					continue;
 				}
 				const __m256i s16 = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(in + p.base));
@@ -123,13 +140,9 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 				const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(v, v), 0xD8);
 				_mm_storeu_si128(reinterpret_cast<__m128i *>(out + x0), _mm256_castsi256_si128(packed));
 			}
-			for (int x = chunk + 8 * blocks; x < end; x++) {
-				const ResampleTap &t = xTaps[x];
-				uint32_t acc = 0;
-				for (int j = 0; j < t.count; j++)
-					acc += uint32_t(t.weight[j]) * in[t.first + j];
-				out[x] = roundQ14(acc);
-			}
+			if (scalarTail)
+				for (int x = tail; x < end; x++)
+					out[x] = roundQ14(tapSum(xTaps[x], in));
 		}
 	}
 }
