@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <random>
+#include <vector>
 
 #include "pyramid/placement.h"
 
@@ -60,7 +61,7 @@ TEST(Placement, PetsLikeBandsComputeFarFewerPixels)
 	}
 	const double octaves = computedPixels(p, scales, bands, kMargin);
 	int source[kMaxLevels];
-	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, source));
+	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, 768, 576, source));
 	checkPlacement(p, scales, bands, source);
 	applyComputedLevels(scales, source);
 	const double placed = computedPixels(p, scales, bands, kMargin);
@@ -89,7 +90,7 @@ TEST(Placement, NeverMoreThanTheOctavesForRandomBands)
 			bands[i] = rng() % 3 == 0 ? RowBand() : RowBand{ b, e };
 		}
 		int source[kMaxLevels];
-		if (!chooseComputedLevels(p, base, bands, kMargin, source)) {
+		if (!chooseComputedLevels(p, base, bands, kMargin, 331, 247, source)) {
 			for (int i = 0; i < base.count; i++)
 				ASSERT_TRUE(bands[i].clipped(base.levels[i].height).empty());
 			continue;
@@ -104,18 +105,46 @@ TEST(Placement, NeverMoreThanTheOctavesForRandomBands)
 	}
 }
 
+TEST(Placement, ComputedLevelsCanBeResampledFromTheImage)
+{
+	// Only the smallest levels of a large frame are needed: the resampler shrinks by at
+	// most kMaxTaps - 1 in one step, so those levels are served from a larger one.
+	ModelParams p;
+	const int width = 2000, height = 1500;
+	const ScaleList scales = scalesOf(p, width, height, 1.0);
+	RowBand bands[kMaxLevels];
+	for (int i = scales.count - 3; i < scales.count; i++)
+		bands[i] = RowBand{ 0, scales.levels[i].height };
+	int source[kMaxLevels];
+	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, width, height, source));
+	checkPlacement(p, scales, bands, source);
+	std::vector<kernels::ResampleTap> taps(size_t(width) + 8);
+	bool smallestComputable = true;
+	for (int i = 0; i < scales.count; i++) {
+		const PyramidLevel &l = scales.levels[i];
+		const bool ok = kernels::buildResampleTaps(width, 4 * l.width, 1.0, taps.data()) &&
+				kernels::buildResampleTaps(height, 4 * l.height, 1.0, taps.data());
+		if (i == scales.count - 1)
+			smallestComputable = ok;
+		if (source[i] == i) {
+			EXPECT_TRUE(ok) << "computed level " << i << " (scale " << l.scale << ")";
+		}
+	}
+	EXPECT_FALSE(smallestComputable); // the case under test
+}
+
 TEST(Placement, NothingNeededOrEveryLevelComputedKeepsTheToolbox)
 {
 	ModelParams p;
 	const ScaleList scales = scalesOf(p, 320, 240, 1.0);
 	RowBand none[kMaxLevels];
 	int source[kMaxLevels];
-	EXPECT_FALSE(chooseComputedLevels(p, scales, none, kMargin, source));
+	EXPECT_FALSE(chooseComputedLevels(p, scales, none, kMargin, 320, 240, source));
 	RowBand all[kMaxLevels];
 	for (int i = 0; i < scales.count; i++)
 		all[i] = RowBand{ 0, scales.levels[i].height };
 	p.nApprox = 0;
-	EXPECT_FALSE(chooseComputedLevels(p, scales, all, kMargin, source));
+	EXPECT_FALSE(chooseComputedLevels(p, scales, all, kMargin, 320, 240, source));
 }
 
 } // namespace

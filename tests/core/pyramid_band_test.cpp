@@ -74,7 +74,8 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 	if (placed) {
 		// Both pyramids compute the levels placed for these bands.
 		int source[kMaxLevels];
-		ASSERT_TRUE(chooseComputedLevels(p, scales, bands, full.channelMargin(), source));
+		ASSERT_TRUE(chooseComputedLevels(p, scales, bands, full.channelMargin(), width, height,
+						 source));
 		ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
 		ASSERT_TRUE(banded.placeComputedLevels(source, scales.count).ok());
 		applyComputedLevels(scales, source);

@@ -128,7 +128,8 @@ Status DetectorImpl::initCalibrated()
 	}
 	if (config.calibratedPyramid) {
 		int source[kMaxLevels];
-		if (chooseComputedLevels(params_, scales, levelRows_, pyramid.channelMargin(), source)) {
+		if (chooseComputedLevels(params_, scales, levelRows_, pyramid.channelMargin(),
+					 maxWidth_, maxHeight_, source)) {
 			st = pyramid.placeComputedLevels(source, scales.count);
 			if (!st.ok())
 				return st;

@@ -47,17 +47,25 @@ double groupPixels(const ModelParams &p, const ScaleList &scales, const RowBand 
 int approximationReach(const ModelParams &p) { return (p.nApprox + 2) / 2; }
 
 bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales, const RowBand *levelRows,
-			  int channelMargin, int *source)
+			  int channelMargin, int imageWidth, int imageHeight, int *source)
 {
 	const int n = scales.count;
 	if (p.nApprox <= 0 || n <= 0)
 		return false;
 	const int reach = approximationReach(p);
-	size_t most = 8;
+	size_t most = size_t(std::max(imageWidth, imageHeight)) * 8 + 8;
 	for (int i = 0; i < n; i++)
 		most = std::max(most, size_t(scales.levels[i].height) + 8);
 	std::vector<kernels::ResampleTap> taps(most);
 	auto needed = [&](int i) { return !rawRows(p, scales.levels[i], levelRows[i]).empty(); };
+	// A computed level is resampled from the image itself (the resampler's taps limit
+	// how far it can shrink in one step).
+	std::vector<char> computable(size_t(n), 0);
+	for (int i = 0; i < n; i++) {
+		const PyramidLevel &l = scales.levels[i];
+		computable[i] = kernels::buildResampleTaps(imageWidth, 4 * l.width, 1.0, taps.data()) &&
+				kernels::buildResampleTaps(imageHeight, 4 * l.height, 1.0, taps.data());
+	}
 
 	// Dynamic programming over the levels in order: best[j] is the least cost of levels
 	// [0, j), each needed one served by a computed level of its group [i, j) within
@@ -77,6 +85,8 @@ bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales, const R
 			if (best[i] == inf)
 				continue;
 			for (int r = std::max(i, j - 1 - reach); r <= std::min(j - 1, i + reach); r++) {
+				if (!computable[r])
+					continue;
 				const double c = best[i] + perLevel +
 						 groupPixels(p, scales, levelRows, channelMargin, r, i, j, taps);
 				if (c < best[j]) {
@@ -87,6 +97,8 @@ bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales, const R
 			}
 		}
 	}
+	if (best[n] == std::numeric_limits<double>::infinity())
+		return false;
 	// Each group's levels take its computed level; levels nobody needs the nearest one.
 	int computedCount = 0;
 	for (int i = 0; i < n; i++)

@@ -24,11 +24,13 @@ int approximationReach(const ModelParams &p);
 // level within approximationReach(), with the fewest channel pixels computed: each
 // computed level in the rows its own and its approximated levels' bands need,
 // `channelMargin` LUV rows wider on each side. Levels nobody needs are never computed
-// (their source is the nearest computed level). False, and nothing written, when no
-// level is needed or the model computes every level (nApprox = 0). Allocates (setup
-// time only).
+// (their source is the nearest computed level), nor levels too small to be resampled
+// from the imageWidth x imageHeight image in one step. False, and nothing written, when
+// no level is needed, the model computes every level (nApprox = 0) or some needed level
+// has no computable level within reach. Allocates (setup time only).
 bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales,
-			  const RowBand *levelRows, int channelMargin, int *source);
+			  const RowBand *levelRows, int channelMargin, int imageWidth,
+			  int imageHeight, int *source);
 
 // Mark the computed levels and sources of `scales` as chooseComputedLevels() gave them.
 void applyComputedLevels(ScaleList &scales, const int *source);
