@@ -13,6 +13,16 @@ namespace calped {
 
 namespace {
 
+// The computed level at scale 1/2, source of the smaller computed levels (as in the
+// toolbox), or -1.
+int halfLevelOf(const ModelParams &p, const ScaleList &scales)
+{
+	for (int i = 0; i < scales.count; i++)
+		if (scales.levels[i].computed && scales.levels[i].scale == 0.5 && p.nApprox > 0)
+			return i;
+	return -1;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point t0)
@@ -98,12 +108,90 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		planeStride_ = rowStride_ * (maxLevelH_ + 2 * padH_);
 		levelBuf_.assign(size_t(kChannelCount) * planeStride_, 0);
 		rowTmp_.assign(size_t(std::max(luvW, luvH)) * 2 + 64, 0);
+		buildTapCache(); // without it (a ratio beyond the resampler) build() reports that
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory,
 				     "pyramid buffers for %dx%d frames do not fit in memory",
 				     maxWidth, maxHeight);
 	}
 	return Status::success();
+}
+
+bool Pyramid::tapSpec(const ScaleList &scales, int width, int height, int i, int kind, int &n,
+		      int &m, double &gain) const
+{
+	const PyramidLevel &l = scales.levels[i];
+	gain = 1.0;
+	if (l.computed) {
+		const int w1 = l.width * 4, h1 = l.height * 4;
+		if ((w1 == width && h1 == height) || kind > kTapsY)
+			return false; // the image itself
+		const int half = halfLevelOf(params_, scales);
+		const bool fromHalf = half >= 0 && i > half;
+		const int srcW = fromHalf ? scales.levels[half].width * 4 : width;
+		const int srcH = fromHalf ? scales.levels[half].height * 4 : height;
+		n = kind == kTapsX ? srcW : srcH;
+		m = kind == kTapsX ? w1 : h1;
+		return true;
+	}
+	const PyramidLevel &r = scales.levels[l.source];
+	if (kind == kTapsX) {
+		n = r.width;
+		m = l.width;
+		return true;
+	}
+	// Power law: channel type t scales by (s / s_source)^-lambda_t.
+	n = r.height;
+	m = l.height;
+	gain = std::pow(l.scale / r.scale, -double(params_.lambdas[kind - kTapsY]));
+	return true;
+}
+
+bool Pyramid::buildTapCache()
+{
+	tapsCached_ = false;
+	ScaleList scales;
+	if (!scalesFor(maxWidth_, maxHeight_, scales).ok())
+		return true; // no level at this size: nothing to cache
+	size_t total = 0;
+	for (int i = 0; i < scales.count; i++)
+		for (int kind = 0; kind < kTapKinds; kind++) {
+			int n, m;
+			double gain;
+			tapOffset_[i][kind] = kNoTaps;
+			if (!tapSpec(scales, maxWidth_, maxHeight_, i, kind, n, m, gain))
+				continue;
+			tapOffset_[i][kind] = total;
+			total += size_t(m);
+		}
+	tapStore_.assign(total, kernels::ResampleTap());
+	for (int i = 0; i < scales.count; i++)
+		for (int kind = 0; kind < kTapKinds; kind++) {
+			int n, m;
+			double gain;
+			if (tapOffset_[i][kind] == kNoTaps)
+				continue;
+			tapSpec(scales, maxWidth_, maxHeight_, i, kind, n, m, gain);
+			if (!kernels::buildResampleTaps(n, m, gain, tapStore_.data() + tapOffset_[i][kind]))
+				return false;
+		}
+	tapsCached_ = true;
+	return true;
+}
+
+const kernels::ResampleTap *Pyramid::levelTaps(int i, int kind)
+{
+	if (tapsCached_ && width_ == maxWidth_ && height_ == maxHeight_) {
+		const size_t at = tapOffset_[i][kind];
+		return at == kNoTaps ? nullptr : tapStore_.data() + at;
+	}
+	int n, m;
+	double gain;
+	if (!tapSpec(scales_, width_, height_, i, kind, n, m, gain))
+		return nullptr;
+	kernels::ResampleTap *out = kind == kTapsX ? xTaps_.data() : kind == kTapsY ? yTaps_.data()
+										: yTapsGain_.data();
+	return kernels::buildResampleTaps(n, m, gain, out) ? out : nullptr;
 }
 
 Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
@@ -122,8 +210,10 @@ Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
 Status Pyramid::placeComputedLevels(const int *source, int count)
 {
 	placedCount_ = 0;
-	if (!source)
+	if (!source) {
+		buildTapCache();
 		return Status::success();
+	}
 	ScaleList scales;
 	Status st = scalesFor(maxWidth_, maxHeight_, scales);
 	if (!st.ok())
@@ -152,6 +242,16 @@ Status Pyramid::placeComputedLevels(const int *source, int count)
 	}
 	std::copy(source, source + count, placedSource_);
 	placedCount_ = count;
+	try {
+		if (!buildTapCache()) {
+			placedCount_ = 0;
+			buildTapCache();
+			return Status::error(ErrorCode::InvalidArgument,
+					     "a placed level is too small to be resampled from the image");
+		}
+	} catch (const std::bad_alloc &) {
+		return Status::error(ErrorCode::OutOfMemory, "resampling taps of the placed levels");
+	}
 	return Status::success();
 }
 
@@ -169,19 +269,18 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 		const RowBand raw = r.wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
 		r.raw.add(raw);
 		if (!l.computed && !raw.empty()) {
-			const PyramidLevel &src = scales_.levels[l.source];
-			kernels::buildResampleTaps(src.height, l.height, 1.0, yTaps_.data());
-			rows_[l.source].raw.add(sourceRows(yTaps_.data(), raw));
+			// Which source rows the taps read does not depend on their gain.
+			const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
+			if (taps)
+				rows_[l.source].raw.add(sourceRows(taps, raw));
 		}
 	}
 	// The LUV rows each computed level's channels need, with the margin.
-	halfLevel_ = -1;
+	halfLevel_ = halfLevelOf(params_, scales_);
 	for (int i = 0; i < n; i++) {
 		const PyramidLevel &l = scales_.levels[i];
 		if (!l.computed)
 			continue;
-		if (l.scale == 0.5 && params_.nApprox > 0 && halfLevel_ < 0)
-			halfLevel_ = i;
 		LevelRows &r = rows_[i];
 		r.chan = RowBand{ 4 * r.raw.begin - channelMargin_, 4 * r.raw.end + channelMargin_ }
 				 .clipped(4 * l.height);
@@ -203,9 +302,10 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 			continue;
 		}
 		const bool fromHalf = halfLevel_ >= 0 && i > halfLevel_;
-		const int srcHeight = fromHalf ? scales_.levels[halfLevel_].height * 4 : height;
-		kernels::buildResampleTaps(srcHeight, h1, 1.0, yTaps_.data());
-		const RowBand src = sourceRows(yTaps_.data(), r.luv);
+		const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
+		if (!taps)
+			continue; // build() reports it
+		const RowBand src = sourceRows(taps, r.luv);
 		if (fromHalf)
 			rows_[halfLevel_].luv.add(src);
 		else
@@ -217,13 +317,14 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 }
 
 void Pyramid::resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst,
-			   const RowBand &rows, const kernels::ResampleTap *yTaps)
+			   const RowBand &rows, const kernels::ResampleTap *xTaps,
+			   const kernels::ResampleTap *yTaps)
 {
 	const RowBand srcRows = sourceRows(yTaps, rows);
 	shiftTaps(yTaps, rows, srcRows.begin, yTapsBand_.data());
 	Plane<uint16_t> tmp = resampleTmp_.view(dst.width, srcRows.size());
 	k_->resamplePlane(src.row(srcRows.begin), src.stride, src.width, srcRows.size(),
-			  dst.row(rows.begin), dst.stride, dst.width, rows.size(), xTaps_.data(),
+			  dst.row(rows.begin), dst.stride, dst.width, rows.size(), xTaps,
 			  yTapsBand_.data(), tmp.data, tmp.stride);
 }
 
@@ -283,12 +384,13 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 		} else {
 			if (!levelLuv_[0].fits(w1, h1) || (isHalf && !halfLuv_[0].fits(w1, h1)))
 				return Status::error(ErrorCode::ImageTooLarge, "level %d does not fit", i);
-			if (!kernels::buildResampleTaps(source[0].width, w1, 1.0, xTaps_.data()) ||
-			    !kernels::buildResampleTaps(source[0].height, h1, 1.0, yTaps_.data()))
+			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
+			const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY) : nullptr;
+			if (!yTaps)
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 			for (int c = 0; c < 3; c++) {
 				in[c] = isHalf ? halfLuv_[c].view(w1, h1) : levelLuv_[c].view(w1, h1);
-				resampleRows(source[c], in[c], r.luv, yTaps_.data());
+				resampleRows(source[c], in[c], r.luv, xTaps, yTaps);
 			}
 			if (isHalf)
 				for (int c = 0; c < 3; c++)
@@ -321,22 +423,22 @@ void Pyramid::realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount])
 void Pyramid::approximate(int i, const RowBand &rows, Plane<uint16_t> out[kChannelCount])
 {
 	const PyramidLevel &l = scales_.levels[i];
-	const PyramidLevel &r = scales_.levels[l.source];
 	Plane<uint16_t> src[kChannelCount];
 	realLevelPlanes(l.source, src);
 	planesAt(approx_.data(), l.width, l.height, out);
-	kernels::buildResampleTaps(r.width, l.width, 1.0, xTaps_.data());
-	// Power law: channel type j scales by (s / s_source)^-lambda_j.
+	const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
+	// Channel types: colour, magnitude, orientations; each has its power-law gain.
 	const int typeOf[kChannelCount] = { 0, 0, 0, 1, 2, 2, 2, 2, 2, 2 };
 	int builtFor = -1;
+	const kernels::ResampleTap *yTaps = nullptr;
 	for (int c = 0; c < kChannelCount; c++) {
 		const int type = typeOf[c];
 		if (type != builtFor) {
-			const double gain = std::pow(l.scale / r.scale, -double(params_.lambdas[type]));
-			kernels::buildResampleTaps(r.height, l.height, gain, yTapsGain_.data());
+			yTaps = levelTaps(i, kTapsY + type);
 			builtFor = type;
 		}
-		resampleRows(src[c], out[c], rows, yTapsGain_.data());
+		if (xTaps && yTaps)
+			resampleRows(src[c], out[c], rows, xTaps, yTaps);
 	}
 }
 

@@ -92,7 +92,21 @@ private:
 	};
 	void planRows(const RowBand *levelRows, int width, int height);
 	void resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst, const RowBand &rows,
-			  const kernels::ResampleTap *yTaps);
+			  const kernels::ResampleTap *xTaps, const kernels::ResampleTap *yTaps);
+
+	// Resampling taps of level i: across (kTapsX) and down (kTapsY, the first channel
+	// type's gain for approximated levels; kTapsY + t for channel type t), from the
+	// image or half image (computed levels) or the computed source level (approximated).
+	enum { kTapsX = 0, kTapsY = 1, kTapKinds = 4 };
+	bool tapSpec(const ScaleList &scales, int width, int height, int i, int kind, int &n, int &m,
+		     double &gain) const;
+	// Builds every level's taps for maximum-size frames (setup time); false if some
+	// computed level cannot be resampled in one step.
+	bool buildTapCache();
+	// Taps for the current frame: cached for maximum-size frames, else built now into a
+	// scratch buffer (valid until the next call of the same kind). nullptr: the ratio is
+	// beyond the resampler.
+	const kernels::ResampleTap *levelTaps(int i, int kind);
 	void approximate(int i, const RowBand &rows, Plane<uint16_t> out[kChannelCount]);
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
 
@@ -118,6 +132,10 @@ private:
 	PlaneBuffer<uint16_t> levelLuv_[3]; // image resampled to one computed scale
 	PlaneBuffer<uint16_t> resampleTmp_;
 	std::vector<kernels::ResampleTap> xTaps_, yTaps_, yTapsGain_, yTapsBand_;
+	std::vector<kernels::ResampleTap> tapStore_; // buildTapCache()
+	static constexpr size_t kNoTaps = ~size_t(0);
+	size_t tapOffset_[kMaxLevels][kTapKinds];
+	bool tapsCached_ = false;
 
 	// Raw (unsmoothed, unpadded) channels of every computed level, back to back.
 	std::vector<uint16_t> realStore_;
