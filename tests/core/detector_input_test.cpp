@@ -88,6 +88,42 @@ TEST(DetectorInput, OddSizesRun)
 	expectHealthy(*det);
 }
 
+TEST(DetectorInput, FrameSizesMayAlternate)
+{
+	// Resampling taps are prepared for maximum-size frames and built per frame for the
+	// others: alternating sizes must give every frame the detections a fresh detector
+	// gives it, with and without an input resize.
+	for (double resize : { 1.0, 1.5 }) {
+		SCOPED_TRACE(resize);
+		DetectorConfig cfg;
+		cfg.maxWidth = 320;
+		cfg.maxHeight = 240;
+		cfg.resize = resize;
+		cfg.cascadeThreshold = -10.0f; // many windows pass: the detections say a lot
+		const Model model = test::randomModel(5);
+		std::unique_ptr<Detector> shared;
+		ASSERT_TRUE(Detector::create(model, cfg, shared).ok());
+		const std::pair<int, int> sizes[] = { { 320, 240 }, { 257, 233 }, { 320, 240 }, { 300, 240 }, { 320, 240 } };
+		for (auto [w, h] : sizes) {
+			SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+			const auto img = test::randomImage(uint32_t(w + h), w, h);
+			std::unique_ptr<Detector> fresh;
+			ASSERT_TRUE(Detector::create(model, cfg, fresh).ok());
+			Detections a, b;
+			ASSERT_TRUE(shared->detect(ImageView::rgb8(img.data(), w, h), a).ok());
+			ASSERT_TRUE(fresh->detect(ImageView::rgb8(img.data(), w, h), b).ok());
+			ASSERT_EQ(a.count, b.count);
+			ASSERT_GT(a.count, 0);
+			for (int i = 0; i < a.count; i++) {
+				EXPECT_EQ(a.items[i].x, b.items[i].x);
+				EXPECT_EQ(a.items[i].y, b.items[i].y);
+				EXPECT_EQ(a.items[i].h, b.items[i].h);
+				EXPECT_EQ(a.items[i].score, b.items[i].score);
+			}
+		}
+	}
+}
+
 TEST(DetectorInput, LargerThanConfigured)
 {
 	auto det = makeDetector();

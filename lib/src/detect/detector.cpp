@@ -71,6 +71,9 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 			resizeX_.resize(taps);
 			resizeY_.resize(taps);
 			resizeRow_.assign(size_t(cfg.maxWidth) * 3 + 8, 0);
+			resizeTapsForMax_ =
+				kernels::buildResampleTaps(cfg.maxWidth, maxWidth_, 1.0, resizeX_.data()) &&
+				kernels::buildResampleTaps(cfg.maxHeight, maxHeight_, 1.0, resizeY_.data());
 		}
 		if (cfg.camera) {
 			camera_ = *cfg.camera;
@@ -312,9 +315,15 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 		const int w1 = scaledSize(width, frameResize_), h1 = scaledSize(height, frameResize_);
 		if (w1 < 1 || h1 < 1)
 			return Status::error(ErrorCode::ImageTooSmall, "resize leaves no pixels");
-		if (!kernels::buildResampleTaps(width, w1, 1.0, resizeX_.data()) ||
-		    !kernels::buildResampleTaps(height, h1, 1.0, resizeY_.data()))
-			return Status::error(ErrorCode::InvalidArgument, "resize ratio too small");
+		// init() built the taps of maximum-size frames; other sizes build their own.
+		const bool maxSize = width == config.maxWidth && height == config.maxHeight;
+		if (!(maxSize && resizeTapsForMax_)) {
+			resizeTapsForMax_ = false;
+			if (!kernels::buildResampleTaps(width, w1, 1.0, resizeX_.data()) ||
+			    !kernels::buildResampleTaps(height, h1, 1.0, resizeY_.data()))
+				return Status::error(ErrorCode::InvalidArgument, "resize ratio too small");
+			resizeTapsForMax_ = maxSize;
+		}
 		kernels::bestKernels().resampleRgb8(rgb, stride, width, height, resized_.data(), 3 * w1, w1, h1,
 					  resizeX_.data(), resizeY_.data(), resizeRow_.data());
 		input_.begin(ImageView::rgb8(resized_.data(), w1, h1));

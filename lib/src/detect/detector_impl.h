@@ -65,6 +65,7 @@ private:
 	std::vector<uint8_t> resized_;
 	std::vector<kernels::ResampleTap> resizeX_, resizeY_;
 	std::vector<int32_t> resizeRow_;
+	bool resizeTapsForMax_ = false; // resizeX_/Y_ hold the taps of maximum-size frames
 	// Per-frame results.
 	std::vector<kernels::WindowHit> hits_;
 	std::vector<Detection> candidates_, sorted_;
