@@ -14,7 +14,8 @@
 #   docs/results/             the plots and overlays it links
 #   out/main/eval.json        one object per (method, resize); out/main/dets/ their CSVs
 # and again with the resize done inside the feature pyramid (tables in results.md,
-# out/main/eval_in_pyramid.json, out/main/dets_in_pyramid/).
+# out/main/eval_in_pyramid.json, out/main/dets_in_pyramid/), and the calibrated methods with
+# placed pyramid levels as well (out/main/eval_placed.json, out/main/dets_placed/).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -101,10 +102,19 @@ find "$results" -maxdepth 1 -type f \( -name '*.dat' -o -name '*.gp' \) -exec mv
 # The same runs with the resize done inside the feature pyramid (DetectorConfig::
 # resizeInPyramid, the toolbox's nOctUp): tables only, beside the ones above.
 pcmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
-	--methods generic,calibrated --resizes 1.5,2.0,2.5 --jobs "$eval_jobs" --resize-in-pyramid
+	--methods generic,calibrated,calibrated-static --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
+	--resize-in-pyramid
 	--json "$out/eval_in_pyramid.json" --dets "$out/dets_in_pyramid" --markdown "$page.pyramid")
 echo "run-main: ${pcmd[*]}"
 "${pcmd[@]}" | tee "$out/eval_in_pyramid.txt"
+# And with the computed levels placed among the needed ones (DetectorConfig::
+# calibratedPyramid, calibrated methods only).
+lcmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
+	--methods calibrated,calibrated-static --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
+	--resize-in-pyramid --calibrated-pyramid
+	--json "$out/eval_placed.json" --dets "$out/dets_placed" --markdown "$page.placed")
+echo "run-main: ${lcmd[*]}"
+"${lcmd[@]}" | tee "$out/eval_placed.txt"
 eval_wall=$((SECONDS - eval_start))
 
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
@@ -129,8 +139,17 @@ cpu=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
 	echo "first ([calibrated.md](calibrated.md#resize-inside-the-pyramid))."
 	echo
 	sed -e '/^Frames: /d' -e '/^### Plots/,$d' -e 's/^### /#### /' "$page.pyramid"
+	echo
+	echo "## Placed pyramid levels"
+	echo
+	echo "The calibrated methods again inside the pyramid, with \`--calibrated-pyramid\`: channels"
+	echo "computed at levels placed among the needed ones instead of the toolbox's octaves"
+	echo "([calibrated.md](calibrated.md#placed-pyramid-levels)). Compare the ms/frame with the"
+	echo "generic mode of the first table."
+	echo
+	sed -e '/^Frames: /d' -e '/^### Plots/,$d' -e 's/^### /#### /' "$page.placed"
 } >"$page"
-rm -f "$page.part" "$page.pyramid"
+rm -f "$page.part" "$page.pyramid" "$page.placed"
 
 {
 	echo
@@ -139,6 +158,9 @@ rm -f "$page.part" "$page.pyramid"
 	echo
 	echo "resize inside the pyramid: $out/eval_in_pyramid.json"
 	cat "$out/eval_in_pyramid.txt"
+	echo
+	echo "placed pyramid levels: $out/eval_placed.json"
+	cat "$out/eval_placed.txt"
 	echo
 	echo "main job wall time: $((SECONDS - start)) s"
 } | tee -a "$out/summary.txt"
