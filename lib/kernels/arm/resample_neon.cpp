@@ -40,6 +40,7 @@ struct WidePlan {
 
 struct BlockPlan {
 	BlockKind kind;
+	int x0; // first output of the block
 	union {
 		WindowPlan window;
 		WidePlan wide;
@@ -50,8 +51,10 @@ inline bool weightFits16(int32_t w) { return w >= 0 && w <= 65535; }
 
 bool planWindow(const ResampleTap *taps, int x0, int srcWidth, WindowPlan &p)
 {
-	const int base = taps[x0].first;
-	if (base + 16 > srcWidth)
+	// The 16 samples start at the block's first tap, or earlier at the right edge so
+	// that they stay inside the row.
+	const int base = std::min(taps[x0].first, srcWidth - 16);
+	if (base < 0)
 		return false;
 	for (int i = 0; i < 8; i++) {
 		const ResampleTap &t = taps[x0 + i];
@@ -89,6 +92,7 @@ bool planWide(const ResampleTap *taps, int x0, int srcWidth, WidePlan &p)
 
 BlockKind planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
 {
+	p.x0 = x0;
 	if (planWindow(taps, x0, srcWidth, p.window))
 		return BlockKind::Window;
 	if (planWide(taps, x0, srcWidth, p.wide))
@@ -187,17 +191,25 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 	// Chunks of blocks across, strips of rows down: each block's plan stays in registers
 	// for a strip, and a strip's rows stay in the cache for all the chunk's blocks.
 	constexpr int kStrip = 16;
-	BlockPlan plans[kChunk];
+	BlockPlan plans[kChunk + 1];
 	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
-		const int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
+		int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
 		for (int b = 0; b < blocks; b++)
 			plans[b].kind = planBlock(xTaps, chunk + 8 * b, srcWidth, plans[b]);
 		const int end = std::min(dstWidth, chunk + 8 * kChunk);
+		// The last few outputs: one more block ending at the row's end, overlapping
+		// the one before (it writes the same values there), or one sample at a time.
+		int tail = chunk + 8 * blocks;
+		if (tail < end && dstWidth >= 8) {
+			plans[blocks].kind = planBlock(xTaps, dstWidth - 8, srcWidth, plans[blocks]);
+			blocks++;
+			tail = end;
+		}
 		for (int y0 = 0; y0 < srcHeight; y0 += kStrip) {
 			const int y1 = std::min(srcHeight, y0 + kStrip);
 			for (int b = 0; b < blocks; b++) {
-				const int x0 = chunk + 8 * b;
 				const BlockPlan &p = plans[b];
+				const int x0 = p.x0;
 				const uint16_t *in = src + y0 * srcStride;
 				uint16_t *out = tmp + y0 * tmpStride + x0;
 				if (p.kind == BlockKind::Window) {
@@ -214,7 +226,7 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 				}
 			}
 			for (int y = y0; y < y1; y++)
-				for (int x = chunk + 8 * blocks; x < end; x++)
+				for (int x = tail; x < end; x++)
 					tmp[y * tmpStride + x] = rowSample(src + y * srcStride, xTaps[x]);
 		}
 	}
