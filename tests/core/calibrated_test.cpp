@@ -225,6 +225,10 @@ TEST(CalibratedDetector, PlacedPyramidNeedsCalibratedMethodAndNoFrameResize)
 	EXPECT_NE(std::string(st.message()).find("resizeInPyramid"), std::string::npos) << st.message();
 	cfg.resizeInPyramid = true;
 	EXPECT_TRUE(Detector::create(test::randomModel(1), cfg, det).ok());
+	cfg.placedLevelReach = 0;
+	st = Detector::create(test::randomModel(1), cfg, det);
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("placedLevelReach"), std::string::npos) << st.message();
 }
 
 float iou(const Detection &a, const Detection &b)

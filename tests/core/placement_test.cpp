@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // DetectorConfig::calibratedPyramid: computed levels placed among the needed ones. Every
-// needed level must be served from a computed level within the toolbox's reach, and the
-// placement must never compute more pixels than the toolbox's octaves for the same bands.
+// needed level must be served from a computed level within the reach asked for, and from
+// the toolbox's reach up the placement must never compute more pixels than the toolbox's
+// octaves for the same bands.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -22,10 +23,8 @@ ScaleList scalesOf(const ModelParams &p, int width, int height, double upscale)
 	return s;
 }
 
-void checkPlacement(const ModelParams &p, const ScaleList &scales, const RowBand *bands,
-		    const int *source)
+void checkPlacement(const ScaleList &scales, const RowBand *bands, const int *source, int reach)
 {
-	const int reach = approximationReach(p);
 	for (int i = 0; i < scales.count; i++) {
 		const int s = source[i];
 		ASSERT_GE(s, 0) << "level " << i;
@@ -38,12 +37,12 @@ void checkPlacement(const ModelParams &p, const ScaleList &scales, const RowBand
 	}
 }
 
-TEST(Placement, ReachIsHalfTheToolboxSpacing)
+TEST(Placement, ToolboxReachIsHalfItsSpacing)
 {
 	ModelParams p;
-	EXPECT_EQ(approximationReach(p), 4); // INRIA: nApprox 7, computed levels 8 apart
+	EXPECT_EQ(toolboxReach(p), 4); // INRIA: nApprox 7, computed levels 8 apart
 	p.nApprox = 3;
-	EXPECT_EQ(approximationReach(p), 2);
+	EXPECT_EQ(toolboxReach(p), 2);
 }
 
 TEST(Placement, PetsLikeBandsComputeFarFewerPixels)
@@ -61,8 +60,8 @@ TEST(Placement, PetsLikeBandsComputeFarFewerPixels)
 	}
 	const double octaves = computedPixels(p, scales, bands, kMargin);
 	int source[kMaxLevels];
-	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, 768, 576, source));
-	checkPlacement(p, scales, bands, source);
+	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, toolboxReach(p), 768, 576, source));
+	checkPlacement(scales, bands, source, toolboxReach(p));
 	applyComputedLevels(scales, source);
 	const double placed = computedPixels(p, scales, bands, kMargin);
 	int computed = 0;
@@ -72,6 +71,14 @@ TEST(Placement, PetsLikeBandsComputeFarFewerPixels)
 		    octaves / 1e6, placed / 1e6, computed);
 	EXPECT_LT(placed, 0.75 * octaves);
 	EXPECT_LE(computed, 2);
+	// A longer reach can only find cheaper placements.
+	ScaleList wider = scalesOf(p, 768, 576, 2.0);
+	ASSERT_TRUE(chooseComputedLevels(p, wider, bands, kMargin, 5, 768, 576, source));
+	checkPlacement(wider, bands, source, 5);
+	applyComputedLevels(wider, source);
+	const double placed5 = computedPixels(p, wider, bands, kMargin);
+	std::printf("reach 5: %.2f M channel pixels\n", placed5 / 1e6);
+	EXPECT_LE(placed5, placed + 1024.0 * 2);
 	for (int i = 16; i < scales.count; i++)
 		EXPECT_FALSE(scales.levels[i].computed) << "level " << i << " is needed by nobody";
 }
@@ -90,12 +97,15 @@ TEST(Placement, NeverMoreThanTheOctavesForRandomBands)
 			bands[i] = rng() % 3 == 0 ? RowBand() : RowBand{ b, e };
 		}
 		int source[kMaxLevels];
-		if (!chooseComputedLevels(p, base, bands, kMargin, 331, 247, source)) {
+		// Any reach from the toolbox's up: the toolbox's placement is then one of those
+		// searched.
+		const int reach = toolboxReach(p) + int(rng() % 4);
+		if (!chooseComputedLevels(p, base, bands, kMargin, reach, 331, 247, source)) {
 			for (int i = 0; i < base.count; i++)
 				ASSERT_TRUE(bands[i].clipped(base.levels[i].height).empty());
 			continue;
 		}
-		checkPlacement(p, base, bands, source);
+		checkPlacement(base, bands, source, reach);
 		ScaleList placed = base;
 		applyComputedLevels(placed, source);
 		// The toolbox's placement is one of those searched; each computed level also
@@ -116,8 +126,8 @@ TEST(Placement, ComputedLevelsCanBeResampledFromTheImage)
 	for (int i = scales.count - 3; i < scales.count; i++)
 		bands[i] = RowBand{ 0, scales.levels[i].height };
 	int source[kMaxLevels];
-	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, width, height, source));
-	checkPlacement(p, scales, bands, source);
+	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, 5, width, height, source));
+	checkPlacement(scales, bands, source, 5);
 	std::vector<kernels::ResampleTap> taps(size_t(width) + 8);
 	bool smallestComputable = true;
 	for (int i = 0; i < scales.count; i++) {
@@ -139,12 +149,14 @@ TEST(Placement, NothingNeededOrEveryLevelComputedKeepsTheToolbox)
 	const ScaleList scales = scalesOf(p, 320, 240, 1.0);
 	RowBand none[kMaxLevels];
 	int source[kMaxLevels];
-	EXPECT_FALSE(chooseComputedLevels(p, scales, none, kMargin, 320, 240, source));
+	EXPECT_FALSE(chooseComputedLevels(p, scales, none, kMargin, 5, 320, 240, source));
 	RowBand all[kMaxLevels];
 	for (int i = 0; i < scales.count; i++)
 		all[i] = RowBand{ 0, scales.levels[i].height };
 	p.nApprox = 0;
-	EXPECT_FALSE(chooseComputedLevels(p, scales, all, kMargin, 320, 240, source));
+	EXPECT_FALSE(chooseComputedLevels(p, scales, all, kMargin, 5, 320, 240, source));
+	p.nApprox = 7;
+	EXPECT_FALSE(chooseComputedLevels(p, scales, all, kMargin, 0, 320, 240, source)); // no reach
 }
 
 } // namespace

@@ -74,7 +74,7 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 	if (placed) {
 		// Both pyramids compute the levels placed for these bands.
 		int source[kMaxLevels];
-		ASSERT_TRUE(chooseComputedLevels(p, scales, bands, full.channelMargin(), width, height,
+		ASSERT_TRUE(chooseComputedLevels(p, scales, bands, full.channelMargin(), 5, width, height,
 						 source));
 		ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
 		ASSERT_TRUE(banded.placeComputedLevels(source, scales.count).ok());

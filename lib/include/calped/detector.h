@@ -79,11 +79,16 @@ struct DetectorConfig {
 	bool boxVoting = true;
 	// Calibrated mode, beyond the thesis and the toolbox: compute channels at pyramid
 	// levels chosen among the needed ones instead of at octaves of the frame, each
-	// approximated level no further from its computed level than the toolbox allows (half
-	// an octave), placed where the row bands cost the fewest pixels. Much less work when
-	// the needed levels start below an octave; the detections differ slightly from the
-	// toolbox pyramid's. Calibrated method only. docs/calibrated.md.
+	// approximated level at most placedLevelReach levels from its computed level, placed
+	// where the row bands cost the fewest pixels. Much less work when the needed levels
+	// start below an octave; the detections differ slightly from the toolbox pyramid's.
+	// Calibrated method only, and no frame resize first (resize 1 or resizeInPyramid).
+	// docs/calibrated.md.
 	bool calibratedPyramid = false;
+	// How far approximations may reach with calibratedPyramid, in pyramid levels (1..16;
+	// 5 is 5/8 of an octave for the INRIA model, whose toolbox pyramid reaches 4 down and 3
+	// up; measured in docs/calibrated.md).
+	int placedLevelReach = 5;
 	// Either method: drop detections on static scene structure (off by default).
 	StaticRejection staticRejection;
 };

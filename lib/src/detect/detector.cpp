@@ -101,6 +101,9 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	if (cfg.calibratedPyramid && cfg.method != DetectionMethod::Calibrated)
 		return Status::error(ErrorCode::InvalidArgument,
 				     "calibratedPyramid places levels for the calibrated method only");
+	if (cfg.calibratedPyramid && (cfg.placedLevelReach < 1 || cfg.placedLevelReach > 16))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "placedLevelReach %d is outside 1..16 levels", cfg.placedLevelReach);
 	// Placed levels are resampled from the frame: resizing it first would only add work.
 	if (cfg.calibratedPyramid && frameResize_ != 1.0)
 		return Status::error(ErrorCode::InvalidArgument,
@@ -132,7 +135,7 @@ Status DetectorImpl::initCalibrated()
 	if (config.calibratedPyramid) {
 		int source[kMaxLevels];
 		if (chooseComputedLevels(params_, scales, levelRows_, pyramid.channelMargin(),
-					 maxWidth_, maxHeight_, source)) {
+					 config.placedLevelReach, maxWidth_, maxHeight_, source)) {
 			st = pyramid.placeComputedLevels(source, scales.count);
 			if (!st.ok())
 				return st;

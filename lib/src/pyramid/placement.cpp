@@ -44,15 +44,14 @@ double groupPixels(const ModelParams &p, const ScaleList &scales, const RowBand 
 
 } // namespace
 
-int approximationReach(const ModelParams &p) { return (p.nApprox + 2) / 2; }
+int toolboxReach(const ModelParams &p) { return (p.nApprox + 2) / 2; }
 
 bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales, const RowBand *levelRows,
-			  int channelMargin, int imageWidth, int imageHeight, int *source)
+			  int channelMargin, int reach, int imageWidth, int imageHeight, int *source)
 {
 	const int n = scales.count;
-	if (p.nApprox <= 0 || n <= 0)
+	if (p.nApprox <= 0 || n <= 0 || reach < 1)
 		return false;
-	const int reach = approximationReach(p);
 	size_t most = size_t(std::max(imageWidth, imageHeight)) * 8 + 8;
 	for (int i = 0; i < n; i++)
 		most = std::max(most, size_t(scales.levels[i].height) + 8);

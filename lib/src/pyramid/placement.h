@@ -15,13 +15,13 @@
 
 namespace calped {
 
-// How far (in levels) an approximated level may be from its computed source: the
-// toolbox's reach, half of the nApprox + 1 levels between computed levels, rounded up.
-int approximationReach(const ModelParams &p);
+// How far (in levels) the toolbox approximates a level from its computed source: half of
+// the nApprox + 1 levels between computed levels, rounded up (4 for the INRIA model).
+int toolboxReach(const ModelParams &p);
 
 // The computed levels and sources (source[i] == i: computed) that serve every needed
 // level (non-empty band in levelRows, rows of the level before padding) from a computed
-// level within approximationReach(), with the fewest channel pixels computed: each
+// level at most `reach` levels away, with the fewest channel pixels computed: each
 // computed level in the rows its own and its approximated levels' bands need,
 // `channelMargin` LUV rows wider on each side. Levels nobody needs are never computed
 // (their source is the nearest computed level), nor levels too small to be resampled
@@ -29,7 +29,7 @@ int approximationReach(const ModelParams &p);
 // no level is needed, the model computes every level (nApprox = 0) or some needed level
 // has no computable level within reach. Allocates (setup time only).
 bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales,
-			  const RowBand *levelRows, int channelMargin, int imageWidth,
+			  const RowBand *levelRows, int channelMargin, int reach, int imageWidth,
 			  int imageHeight, int *source);
 
 // Mark the computed levels and sources of `scales` as chooseComputedLevels() gave them.
