@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "writers.h"
 
+#include "json_detections.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -83,21 +85,10 @@ std::string jsonString(const std::string &text)
 void writeJsonlFrame(FILE *f, long frame, const std::string &file, double ms,
 		     const Detections &detections)
 {
-	std::fprintf(f, "{\"frame\":%ld,\"file\":%s,\"ms\":%.3f,\"detections\":[", frame,
+	std::fprintf(f, "{\"frame\":%ld,\"file\":%s,\"ms\":%.3f,\"detections\":", frame,
 		     jsonString(file).c_str(), ms);
-	bool first = true;
-	for (const Detection &d : detections) {
-		std::fprintf(f, "%s{\"x\":%.2f,\"y\":%.2f,\"w\":%.2f,\"h\":%.2f,\"score\":%.4f",
-			     first ? "" : ",", d.x, d.y, d.w, d.h, d.score);
-		// With a calibration: where the person stands (metres) and how tall the box is.
-		if (std::isfinite(d.groundX) && std::isfinite(d.groundY))
-			std::fprintf(f, ",\"ground_x\":%.3f,\"ground_y\":%.3f", d.groundX, d.groundY);
-		if (std::isfinite(d.worldHeight))
-			std::fprintf(f, ",\"world_height\":%.3f", d.worldHeight);
-		std::fputc('}', f);
-		first = false;
-	}
-	std::fputs("]}\n", f);
+	writeJsonDetections(f, detections);
+	std::fputs("}\n", f);
 }
 
 } // namespace calped::detect_tool
