@@ -338,15 +338,17 @@ TEST(CalibratedDetector, LowCamerasStayCheaperThanGeneric)
 			const Eigen::Vector3d t = -R * Eigen::Vector3d(0, 0, camHeight);
 			CameraModel camera;
 			ASSERT_TRUE(CameraModel::fromPinhole(K, R, t, LengthUnit::Metre, camera).ok());
-			uint64_t windows[2] = {};
-			double ms[2] = {};
-			for (int m = 0; m < 2; m++) {
+			// Generic, calibrated, calibrated with placed pyramid levels.
+			uint64_t windows[3] = {};
+			double ms[3] = {};
+			for (int m = 0; m < 3; m++) {
 				DetectorConfig cfg;
 				cfg.maxWidth = 640;
 				cfg.maxHeight = 480;
 				cfg.camera = &camera;
 				cfg.cascadeThreshold = -2.0f;
 				cfg.method = m ? DetectionMethod::Calibrated : DetectionMethod::Generic;
+				cfg.calibratedPyramid = m == 2;
 				std::unique_ptr<Detector> det;
 				ASSERT_TRUE(Detector::create(model, cfg, det).ok());
 				for (uint32_t f = 0; f < 3; f++) {
@@ -358,10 +360,12 @@ TEST(CalibratedDetector, LowCamerasStayCheaperThanGeneric)
 				}
 			}
 			std::printf("camera %.1f m, pitch %.0f deg: windows/frame generic %llu, calibrated %llu "
-				    "(%.1f%%); ms/frame generic %.1f, calibrated %.1f\n",
+				    "(%.1f%%), placed levels %llu; ms/frame generic %.1f, calibrated %.1f, placed "
+				    "levels %.1f\n",
 				    camHeight, pitchDeg, (unsigned long long)(windows[0] / 3),
 				    (unsigned long long)(windows[1] / 3), 100.0 * windows[1] / windows[0],
-				    ms[0] / 3, ms[1] / 3);
+				    (unsigned long long)(windows[2] / 3), ms[0] / 3, ms[1] / 3, ms[2] / 3);
+			EXPECT_LT(windows[2] * 2, windows[0]) << camHeight << " m, " << pitchDeg << " deg";
 			EXPECT_LT(windows[1] * 2, windows[0]) << camHeight << " m, " << pitchDeg << " deg";
 		}
 }
