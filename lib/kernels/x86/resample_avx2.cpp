@@ -93,13 +93,12 @@ inline __m256i pick(__m256i lo, __m256i hi, __m256i index)
 	return _mm256_blendv_epi8(fromLo, fromHi, _mm256_cmpgt_epi32(index, _mm256_set1_epi32(7)));
 }
 
-// The weighted sums (before rounding) of a window block's eight outputs.
-inline __m256i windowSums(const WindowPlan &p, const uint16_t *in)
+// The weighted sums of a window block's eight outputs, added to acc.
+inline __m256i windowSums(const WindowPlan &p, const uint16_t *in, __m256i acc)
 {
 	const __m256i s16 = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(in + p.base));
 	const __m256i lo = _mm256_cvtepu16_epi32(_mm256_castsi256_si128(s16));
 	const __m256i hi = _mm256_cvtepu16_epi32(_mm256_extracti128_si256(s16, 1));
-	__m256i acc = _mm256_setzero_si256();
 	for (int j = 0; j < 3; j++) {
 		const __m256i idx = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p.index[j]));
 		const __m256i w = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p.weight[j]));
@@ -110,7 +109,7 @@ inline __m256i windowSums(const WindowPlan &p, const uint16_t *in)
 
 // The same for a wide block: each output's 8 samples times its 8 weights, summed across
 // lanes (products below 2^31, sums below 2^32, so the wrapping adds are exact).
-inline __m256i wideSums(const WidePlan &p, const uint16_t *in)
+inline __m256i wideSums(const WidePlan &p, const uint16_t *in, __m256i acc)
 {
 	__m256i prod[8];
 	for (int i = 0; i < 8; i++) {
@@ -125,8 +124,8 @@ inline __m256i wideSums(const WidePlan &p, const uint16_t *in)
 					     _mm256_hadd_epi32(prod[2], prod[3]));
 	const __m256i g1 = _mm256_hadd_epi32(_mm256_hadd_epi32(prod[4], prod[5]),
 					     _mm256_hadd_epi32(prod[6], prod[7]));
-	return _mm256_add_epi32(_mm256_permute2x128_si256(g0, g1, 0x20),
-				_mm256_permute2x128_si256(g0, g1, 0x31));
+	return _mm256_add_epi32(acc, _mm256_add_epi32(_mm256_permute2x128_si256(g0, g1, 0x20),
+						      _mm256_permute2x128_si256(g0, g1, 0x31)));
 }
 
 inline uint32_t tapSum(const ResampleTap &t, const uint16_t *in)
@@ -199,16 +198,16 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 				const int x0 = p.x0;
 				__m256i acc;
 				if (p.kind == BlockKind::Window) {
-					acc = windowSums(p.window, in);
+					acc = windowSums(p.window, in, half);
 				} else if (p.kind == BlockKind::Wide) {
-					acc = wideSums(p.wide, in);
+					acc = wideSums(p.wide, in, half);
 				} else {
 					for (int x = x0; x < x0 + 8; x++)
 						out[x] = roundQ14(tapSum(xTaps[x], in));
 					continue;
 				}
-				// Unsigned sums below 2^32: round, shift logically, saturate to 16 bits.
-				const __m256i v = _mm256_min_epu32(_mm256_srli_epi32(_mm256_add_epi32(acc, half), kQ), max);
+				// Rounded unsigned sums below 2^32: shift logically, saturate to 16 bits.
+				const __m256i v = _mm256_min_epu32(_mm256_srli_epi32(acc, kQ), max);
 				const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(v, v), 0xD8);
 				_mm_storeu_si128(reinterpret_cast<__m128i *>(out + x0), _mm256_castsi256_si128(packed));
 			}
