@@ -156,6 +156,66 @@ TEST(PyramidBands, PlacementIsCheckedAndSizedForTheMaximumFrame)
 	EXPECT_LT(pyr.computedCount, scales.count);
 }
 
+TEST(PyramidBands, ColumnRangesEqualTheFullLevel)
+{
+	// The calibrated mode's second pass prepares a level only in the rows and columns its
+	// new regions' windows read: there it must equal the full level, padding included
+	// where the range touches a side. Toolbox octaves and placed levels.
+	const int width = 2 * 160 + 1, height = 2 * 124 - 1;
+	const std::vector<uint8_t> rgb = test::randomImage(41, width, height);
+	ModelParams p;
+	for (bool placed : { false, true }) {
+		SCOPED_TRACE(placed ? "placed levels" : "octaves");
+		Pyramid full, part;
+		ASSERT_TRUE(full.init(p, width, height).ok());
+		ASSERT_TRUE(part.init(p, width, height).ok());
+		ScaleList scales;
+		ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
+		RowBand all[kMaxLevels];
+		for (int i = 0; i < scales.count; i++)
+			all[i] = RowBand{ 0, scales.levels[i].height };
+		if (placed) {
+			int source[kMaxLevels];
+			ASSERT_TRUE(chooseComputedLevels(p, scales, all, full.channelMargin(), 5, width,
+							 height, source));
+			ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
+			ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
+		}
+		ASSERT_TRUE(full.build(rgb.data(), 3 * width, width, height).ok());
+		ASSERT_TRUE(part.build(rgb.data(), 3 * width, width, height).ok());
+		std::mt19937 rng(placed ? 7 : 3);
+		for (int i = 0; i < scales.count; i++) {
+			const int h = scales.levels[i].height, w = scales.levels[i].width;
+			for (int trial = 0; trial < 4; trial++) {
+				int r0 = int(rng() % h), r1 = r0 + 1 + int(rng() % (h - r0));
+				int c0 = int(rng() % w), c1 = c0 + 1 + int(rng() % (w - c0));
+				if (trial == 1)
+					c0 = 0; // touching the left side
+				if (trial == 2)
+					c1 = w, r0 = 0; // the right side and the top
+				const RowBand rows{ r0, r1 }, cols{ c0, c1 };
+				const LevelChannels a = full.level(i);
+				std::vector<uint16_t> expected(a.data, a.data + kChannelCount * a.planeStride);
+				const LevelChannels b = part.level(i, &rows, &cols);
+				const int pad = full.padCellsW(), padH = full.padCellsH();
+				const int y0 = r0 == 0 ? 0 : r0 + padH, y1 = r1 == h ? b.paddedHeight : r1 + padH;
+				const int x0 = c0 == 0 ? 0 : c0 + pad, x1 = c1 == w ? b.paddedWidth : c1 + pad;
+				int mismatches = 0;
+				for (int c = 0; c < kChannelCount; c++)
+					for (int y = y0; y < y1; y++)
+						for (int x = x0; x < x1; x++) {
+							const size_t k = size_t(c) * a.planeStride + size_t(y) * a.rowStride + x;
+							if (expected[k] != b.data[k] && mismatches++ < 3)
+								ADD_FAILURE() << "level " << i << " channel " << c << " padded ("
+									      << y << ", " << x << ") rows " << r0 << ".." << r1
+									      << " cols " << c0 << ".." << c1;
+						}
+				ASSERT_EQ(mismatches, 0);
+			}
+		}
+	}
+}
+
 TEST(PyramidBands, RowsEqualTheFullPyramidFromCameraFormats)
 {
 	const int width = 317, height = 239;

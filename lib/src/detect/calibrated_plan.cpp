@@ -83,6 +83,7 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 	g.resize = resize;
 	params_ = params;
 	padH_ = padH;
+	padW_ = padW;
 	geometry_ = g;
 	scales_ = scales;
 	// Half a box, in window steps (cells of the level).
@@ -144,6 +145,23 @@ RowBand CalibratedPlan::rowsRead(int i, const uint32_t *windows, size_t count) c
 		lastRow = std::max(lastRow, r);
 	}
 	return windowRowsRead(params_, padH_, firstRow, lastRow, scales_.levels[i].height);
+}
+
+RowBand CalibratedPlan::colsRead(int i, const uint32_t *windows, size_t count) const
+{
+	int firstCol = cols_[i], lastCol = -1;
+	for (size_t k = 0; k < count; k++) {
+		const int c = int(windows[k] & 0xFFFF);
+		firstCol = std::min(firstCol, c);
+		lastCol = std::max(lastCol, c);
+	}
+	if (lastCol < firstCol)
+		return RowBand();
+	// A window at column c reads padded columns [c * step, c * step + model width).
+	const int step = params_.stride / params_.shrink;
+	const int windowCols = params_.modelDsPadW / params_.shrink;
+	return RowBand{ firstCol * step - padW_, lastCol * step + windowCols - padW_ }.clipped(
+		scales_.levels[i].width);
 }
 
 size_t CalibratedPlan::largestLevelWindows() const

@@ -54,6 +54,8 @@ public:
 	RowBand levelRows(int i) const { return levelRows_[i]; }
 	// The rows of level i that these windows (row << 16 | column) read.
 	RowBand rowsRead(int i, const uint32_t *windows, size_t count) const;
+	// The columns of level i (before padding) that they read, as a range.
+	RowBand colsRead(int i, const uint32_t *windows, size_t count) const;
 	// Windows of level i, packed row << 16 | column, columns outer (the toolbox's order).
 	const uint32_t *windows(int i) const { return windows_.data() + first_[i]; }
 	size_t windowCount(int i) const { return first_[i + 1] - first_[i]; }
@@ -90,7 +92,7 @@ private:
 	size_t gridFirst_[kMaxLevels + 1] = {};
 	int rows_[kMaxLevels] = {}, cols_[kMaxLevels] = {};
 	RowBand levelRows_[kMaxLevels];
-	int padH_ = 0;
+	int padH_ = 0, padW_ = 0;
 };
 
 } // namespace calped

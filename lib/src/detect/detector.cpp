@@ -239,9 +239,11 @@ double DetectorImpl::classifySparseDense()
 		if (n == 0)
 			continue;
 		stats.denseWindows += n;
-		// Only the rows these windows read: the level was prepared in full in pass 1.
+		// Only the rows and columns these windows read: the level was prepared in full
+		// in pass 1, and the new regions are small.
 		const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
-		ms += classifyList(i, pyramid.level(i, &rows), frameList_.data(), n);
+		const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
+		ms += classifyList(i, pyramid.level(i, &rows, &cols), frameList_.data(), n);
 	}
 	return ms;
 }

@@ -318,14 +318,16 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 
 void Pyramid::resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst,
 			   const RowBand &rows, const kernels::ResampleTap *xTaps,
-			   const kernels::ResampleTap *yTaps)
+			   const kernels::ResampleTap *yTaps, const RowBand *cols)
 {
 	const RowBand srcRows = sourceRows(yTaps, rows);
 	shiftTaps(yTaps, rows, srcRows.begin, yTapsBand_.data());
-	Plane<uint16_t> tmp = resampleTmp_.view(dst.width, srcRows.size());
+	// Each output column depends only on its own taps, so a range of them is exact.
+	const RowBand c = cols ? *cols : RowBand{ 0, dst.width };
+	Plane<uint16_t> tmp = resampleTmp_.view(c.size(), srcRows.size());
 	k_->resamplePlane(src.row(srcRows.begin), src.stride, src.width, srcRows.size(),
-			  dst.row(rows.begin), dst.stride, dst.width, rows.size(), xTaps,
-			  yTapsBand_.data(), tmp.data, tmp.stride);
+			  dst.row(rows.begin) + c.begin, dst.stride, c.size(), rows.size(),
+			  xTaps + c.begin, yTapsBand_.data(), tmp.data, tmp.stride);
 }
 
 Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
@@ -420,7 +422,8 @@ void Pyramid::realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount])
 	planesAt(realStore_.data() + realOffset_[i], l.width, l.height, out);
 }
 
-void Pyramid::approximate(int i, const RowBand &rows, Plane<uint16_t> out[kChannelCount])
+void Pyramid::approximate(int i, const RowBand &rows, const RowBand &cols,
+			  Plane<uint16_t> out[kChannelCount])
 {
 	const PyramidLevel &l = scales_.levels[i];
 	Plane<uint16_t> src[kChannelCount];
@@ -438,28 +441,33 @@ void Pyramid::approximate(int i, const RowBand &rows, Plane<uint16_t> out[kChann
 			builtFor = type;
 		}
 		if (xTaps && yTaps)
-			resampleRows(src[c], out[c], rows, xTaps, yTaps);
+			resampleRows(src[c], out[c], rows, xTaps, yTaps, &cols);
 	}
 }
 
-LevelChannels Pyramid::level(int i, const RowBand *only)
+LevelChannels Pyramid::level(int i, const RowBand *only, const RowBand *onlyCols)
 {
 	const PyramidLevel &l = scales_.levels[i];
+	const int reach = params_.pyramidSmooth > 0 ? 1 : 0;
 	// Smoothing the raw band is exact in the wanted rows (it reaches one row further);
 	// padding above or below the level exists only where the band touches that edge.
 	RowBand band = rows_[i].raw;
 	if (only) {
 		const RowBand wanted = *only;
-		band = wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
+		band = wanted.grown(reach, l.height);
 		if (!rows_[i].raw.contains(band))
 			band = rows_[i].raw; // outside what build() prepared: keep its band
 	}
+	// The same across: columns one wider than those wanted (the smoothing treats the ends
+	// of the range as the level's edges, so only the wanted columns are exact), padding
+	// beside the level only where the range touches that side.
+	const RowBand cols = onlyCols ? onlyCols->grown(reach, l.width) : RowBand{ 0, l.width };
 	Plane<uint16_t> raw[kChannelCount];
 	if (l.computed) {
 		realLevelPlanes(i, raw);
 	} else {
 		const auto t0 = Clock::now();
-		approximate(i, band, raw);
+		approximate(i, band, cols, raw);
 		msApprox += msSince(t0);
 	}
 
@@ -469,23 +477,24 @@ LevelChannels Pyramid::level(int i, const RowBand *only)
 	for (int c = 0; c < kChannelCount; c++) {
 		uint16_t *plane = levelBuf_.data() + c * planeStride_;
 		uint16_t *inner = plane + padH_ * rowStride_ + padW_;
-		if (band.empty())
+		if (band.empty() || cols.empty())
 			break;
 		if (params_.pyramidSmooth > 0)
-			k_->smoothTri1(raw[c].row(band.begin), raw[c].stride,
-				       inner + band.begin * rowStride_, rowStride_, w, band.size(),
-				       rowTmp_.data());
+			k_->smoothTri1(raw[c].row(band.begin) + cols.begin, raw[c].stride,
+				       inner + band.begin * rowStride_ + cols.begin, rowStride_,
+				       cols.size(), band.size(), rowTmp_.data());
 		else
 			for (int y = band.begin; y < band.end; y++)
-				std::memcpy(inner + y * rowStride_, raw[c].row(y), sizeof(uint16_t) * w);
+				std::memcpy(inner + y * rowStride_ + cols.begin, raw[c].row(y) + cols.begin,
+					    sizeof(uint16_t) * cols.size());
 		// Colour is padded by replication, gradients by zeros (the toolbox's padWith).
 		const bool replicate = c < 3;
 		for (int y = padH_ + band.begin; y < padH_ + band.end; y++) {
 			uint16_t *row = plane + y * rowStride_;
-			const uint16_t left = replicate ? row[padW_] : 0;
-			const uint16_t right = replicate ? row[padW_ + w - 1] : 0;
-			std::fill(row, row + padW_, left);
-			std::fill(row + padW_ + w, row + pw, right);
+			if (cols.begin == 0)
+				std::fill(row, row + padW_, replicate ? row[padW_] : uint16_t(0));
+			if (cols.end == w)
+				std::fill(row + padW_ + w, row + pw, replicate ? row[padW_ + w - 1] : uint16_t(0));
 		}
 		for (int y = 0; y < padH_; y++) {
 			uint16_t *top = plane + y * rowStride_;

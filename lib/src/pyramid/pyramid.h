@@ -67,9 +67,10 @@ public:
 	const ScaleList &scales() const { return scales_; }
 
 	// Smooth and pad level i (computing it by approximation first if needed), in the
-	// band build() was given for it, or only in rows `only` of that band (rows outside
-	// hold stale data).
-	LevelChannels level(int i, const RowBand *only = nullptr);
+	// band build() was given for it, or only in rows `only` of that band, and then, if
+	// `onlyCols` is given, only in those columns (before padding) of them; rows and
+	// columns outside hold stale data.
+	LevelChannels level(int i, const RowBand *only = nullptr, const RowBand *onlyCols = nullptr);
 
 	ptrdiff_t rowStride() const { return rowStride_; }
 	ptrdiff_t planeStride() const { return planeStride_; }
@@ -91,8 +92,10 @@ private:
 				// for the half-size image the rows smaller octaves resample)
 	};
 	void planRows(const RowBand *levelRows, int width, int height);
+	// dst's `rows` from src, in all of dst's columns or only in `cols`.
 	void resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst, const RowBand &rows,
-			  const kernels::ResampleTap *xTaps, const kernels::ResampleTap *yTaps);
+			  const kernels::ResampleTap *xTaps, const kernels::ResampleTap *yTaps,
+			  const RowBand *cols = nullptr);
 
 	// Resampling taps of level i: across (kTapsX) and down (kTapsY, the first channel
 	// type's gain for approximated levels; kTapsY + t for channel type t), from the
@@ -107,7 +110,8 @@ private:
 	// scratch buffer (valid until the next call of the same kind). nullptr: the ratio is
 	// beyond the resampler.
 	const kernels::ResampleTap *levelTaps(int i, int kind);
-	void approximate(int i, const RowBand &rows, Plane<uint16_t> out[kChannelCount]);
+	void approximate(int i, const RowBand &rows, const RowBand &cols,
+			 Plane<uint16_t> out[kChannelCount]);
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
 
 	ModelParams params_;
