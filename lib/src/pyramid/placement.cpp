@@ -96,7 +96,7 @@ bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales, const R
 			}
 		}
 	}
-	if (best[n] == std::numeric_limits<double>::infinity())
+	if (best[n] == inf)
 		return false;
 	// Each group's levels take its computed level; levels nobody needs the nearest one.
 	int computedCount = 0;
