@@ -211,7 +211,11 @@ Status Pyramid::placeComputedLevels(const int *source, int count)
 {
 	placedCount_ = 0;
 	if (!source) {
-		buildTapCache();
+		try {
+			buildTapCache();
+		} catch (const std::bad_alloc &) {
+			return Status::error(ErrorCode::OutOfMemory, "resampling taps of the pyramid");
+		}
 		return Status::success();
 	}
 	ScaleList scales;
