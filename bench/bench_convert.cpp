@@ -12,7 +12,6 @@
 
 #include "kernels.h"
 #include "pixel_formats.h"
-#include "synthetic.h"
 #include "test_data.h"
 
 using namespace calped;
@@ -29,15 +28,8 @@ int main(int argc, char **argv)
 			repeat = std::atoi(argv[i + 1]);
 	}
 	test::RgbImage img;
-	if (!framePath.empty() && !test::loadRgb(framePath, img)) {
-		std::fprintf(stderr, "bench_convert: cannot decode %s\n", framePath.c_str());
+	if (!test::loadFrameOrSynthetic(framePath, "bench_convert", img))
 		return 1;
-	}
-	if (framePath.empty()) {
-		img.width = 768;
-		img.height = 576;
-		img.pixels = test::randomImage(1, img.width, img.height);
-	}
 	const int w = img.width, h = img.height;
 	const PixelFormat formats[] = { PixelFormat::BGR8, PixelFormat::Gray8, PixelFormat::NV12,
 					PixelFormat::YUV420, PixelFormat::YUYV, PixelFormat::BayerRGGB8 };

@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "kernels.h"
-#include "synthetic.h"
 #include "test_data.h"
 
 using namespace calped;
@@ -37,15 +36,8 @@ int main(int argc, char **argv)
 	if (ratios.empty())
 		ratios = { 1.5, 2.0, 2.5 };
 	test::RgbImage img;
-	if (!framePath.empty() && !test::loadRgb(framePath, img)) {
-		std::fprintf(stderr, "bench_resize: cannot decode %s\n", framePath.c_str());
+	if (!test::loadFrameOrSynthetic(framePath, "bench_resize", img))
 		return 1;
-	}
-	if (framePath.empty()) {
-		img.width = 768;
-		img.height = 576;
-		img.pixels = test::randomImage(1, img.width, img.height);
-	}
 	const int w = img.width, h = img.height;
 	const kernels::KernelTable *tables[8];
 	const int nTables = kernels::availableKernelTables(tables, 8);

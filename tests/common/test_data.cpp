@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "test_data.h"
 
+#include "synthetic.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -130,6 +132,20 @@ DiffStats compare(const float *ours, const float *ref, size_t n)
 	std::sort(d.begin(), d.end());
 	s.p99Abs = d[std::min(n - 1, size_t(std::ceil(0.99 * n)) - 1)];
 	return s;
+}
+
+bool loadFrameOrSynthetic(const std::string &path, const char *program, RgbImage &out)
+{
+	if (path.empty()) {
+		out.width = 768;
+		out.height = 576;
+		out.pixels = randomImage(1, out.width, out.height);
+		return true;
+	}
+	if (loadRgb(path, out))
+		return true;
+	std::fprintf(stderr, "%s: cannot decode %s\n", program, path.c_str());
+	return false;
 }
 
 } // namespace test

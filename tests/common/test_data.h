@@ -22,6 +22,9 @@ struct RgbImage {
 	std::vector<uint8_t> pixels; // interleaved RGB
 };
 bool loadRgb(const std::string &path, RgbImage &out);
+// The image at `path`, or a 768x576 synthetic one (randomImage) when path is empty; false
+// with a message on stderr naming `program` when the file cannot be decoded (benchmarks).
+bool loadFrameOrSynthetic(const std::string &path, const char *program, RgbImage &out);
 
 bool readFile(const std::string &path, std::vector<uint8_t> &out);
 std::vector<float> readFloats(const std::string &path);
