@@ -211,7 +211,11 @@ double DetectorImpl::classifySparseDense()
 		stats.sparseWindows += sparseN;
 		stats.denseWindows += n - sparseN;
 		stats.msCandidates += msSince(tList);
-		ms += classifyList(i, pyramid.level(i), frameList_.data(), n);
+		// Only the rows and columns these windows read: the plausible windows' band is
+		// wider than the sparse grid's at its ends.
+		const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
+		const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
+		ms += classifyList(i, pyramid.level(i, &rows, &cols), frameList_.data(), n);
 		stats.levels++;
 	}
 	const auto tRegions = Clock::now();
@@ -239,8 +243,7 @@ double DetectorImpl::classifySparseDense()
 		if (n == 0)
 			continue;
 		stats.denseWindows += n;
-		// Only the rows and columns these windows read: the level was prepared in full
-		// in pass 1, and the new regions are small.
+		// Only the rows and columns these windows read (the new regions are small).
 		const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
 		const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
 		ms += classifyList(i, pyramid.level(i, &rows, &cols), frameList_.data(), n);
