@@ -12,6 +12,7 @@ const KernelTable &referenceKernels()
 		rgbToLuv_ref,
 		resampleRgb8_ref,
 		resamplePlane_ref,
+		resamplePlanes_ref,
 		smoothTri1_ref,
 		gradMagOrient_ref,
 		triSumR_ref,
@@ -33,6 +34,7 @@ const KernelTable &portableKernels()
 		rgbToLuv_ref,
 		resampleRgb8_opt,
 		resamplePlane_opt,
+		resamplePlanes_opt,
 		smoothTri1_opt,
 		gradMagOrient_opt,
 		triSumR_opt,
@@ -60,6 +62,7 @@ const KernelTable &avx2Kernels()
 		t.smoothTri1 = smoothTri1_avx2;
 		t.triSum = triSumR_avx2;
 		t.resamplePlane = resamplePlane_avx2;
+		t.resamplePlanes = resamplePlanes_avx2;
 		t.resampleRgb8 = resampleRgb8_avx2;
 		t.normalizeMag = normalizeMag_avx2;
 		t.gradHist4 = gradHist4_avx2;
@@ -92,6 +95,7 @@ const KernelTable &neonKernels()
 		t.rgbToLuv = rgbToLuv_neon;
 		t.resampleRgb8 = resampleRgb8_neon;
 		t.resamplePlane = resamplePlane_neon;
+		t.resamplePlanes = resamplePlanes_neon;
 		t.smoothTri1 = smoothTri1_neon;
 		t.gradMagOrient = gradMagOrient_neon;
 		t.triSum = triSumR_neon;

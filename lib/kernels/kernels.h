@@ -89,6 +89,33 @@ void resamplePlane_opt(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, i
 		       const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 		       ptrdiff_t tmpStride);
 
+// Several planes of one size resampled with the same xTaps (the channels of one pyramid
+// level): SIMD versions plan the row pass once for all of them. Each plane has its own
+// strides and yTaps (the channel types' gains differ); tmp is shared.
+struct PlaneJob {
+	const uint16_t *src;
+	ptrdiff_t srcStride;
+	uint16_t *dst;
+	ptrdiff_t dstStride;
+	const ResampleTap *yTaps;
+};
+using ResamplePlaneFn = decltype(&resamplePlane_ref);
+// The plain form: one plane after another with a single-plane kernel.
+template <ResamplePlaneFn plane>
+void resampleEachPlane(const PlaneJob *jobs, int count, int srcWidth, int srcHeight, int dstWidth,
+		       int dstHeight, const ResampleTap *xTaps, uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	for (int i = 0; i < count; i++)
+		plane(jobs[i].src, jobs[i].srcStride, srcWidth, srcHeight, jobs[i].dst, jobs[i].dstStride,
+		      dstWidth, dstHeight, xTaps, jobs[i].yTaps, tmp, tmpStride);
+}
+void resamplePlanes_ref(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride);
+void resamplePlanes_opt(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride);
+
 // ---- smoothing ---------------------------------------------------------------------------
 // convTri with radius 1: [1 2 1]/4 in both directions, borders replicated. dst may not
 // alias src. rowTmp holds width uint32.
@@ -228,6 +255,9 @@ void resamplePlane_avx2(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, 
 			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 			ptrdiff_t tmpStride);
+void resamplePlanes_avx2(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			 int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			 ptrdiff_t tmpStride);
 
 // ---- NEON kernels (lib/kernels/arm/, aarch64 and armv7 with NEON) ----------------------
 // Same contracts as the references above; built only when the target has NEON.
@@ -240,6 +270,9 @@ void resamplePlane_neon(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, 
 			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 			ptrdiff_t tmpStride);
+void resamplePlanes_neon(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			 int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			 ptrdiff_t tmpStride);
 void smoothTri1_neon(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
 		     ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp);
 void triSumR_neon(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
@@ -264,6 +297,7 @@ struct KernelTable {
 	decltype(&rgbToLuv_ref) rgbToLuv;
 	decltype(&resampleRgb8_ref) resampleRgb8;
 	decltype(&resamplePlane_ref) resamplePlane;
+	decltype(&resamplePlanes_ref) resamplePlanes;
 	decltype(&smoothTri1_ref) smoothTri1;
 	decltype(&gradMagOrient_ref) gradMagOrient;
 	decltype(&triSumR_ref) triSum;

@@ -137,6 +137,43 @@ TEST(KernelEquality, ResamplePlaneHalvingAndLongRows)
 			}
 }
 
+TEST(KernelEquality, ResamplePlanesShareOnePlan)
+{
+	// Several planes with their own strides and gains (the channels of a level) in one
+	// call, each equal to the reference on that plane alone: widths past one chunk of
+	// planned blocks (512 outputs, with a remainder shorter than a block), the ratios of
+	// approximated levels, exact halving, the largest weights the 16-bit multiply takes
+	// (gain 1.99) and beyond (gain 2.3), and the sizes of PETS's placed levels.
+	std::mt19937 rng(12);
+	const std::pair<int, int> widths[] = { { 249, 384 }, { 249, 209 }, { 768, 996 }, { 768, 592 },
+					       { 1100, 1030 }, { 700, 1027 }, { 1040, 520 }, { 20, 9 } };
+	const double gains[] = { 1.0, 1.07, 0.93, 1.99, 2.3 };
+	for (const KernelTable *k : tablesUnderTest())
+		for (auto [sw, dw] : widths) {
+			const int sh = 13, dh = 17, planes = 5;
+			std::vector<ResampleTap> xt(dw), yt(size_t(dh) * planes);
+			ASSERT_TRUE(buildResampleTaps(sw, dw, 1.0, xt.data()));
+			std::vector<std::vector<uint16_t>> src, want, got;
+			std::vector<PlaneJob> jobs;
+			for (int p = 0; p < planes; p++) {
+				ASSERT_TRUE(buildResampleTaps(sh, dh, gains[p], yt.data() + p * dh));
+				src.push_back(randomPlane(rng, size_t(sw + p) * sh + 1, 65535));
+				want.emplace_back(size_t(dw + 3) * dh + 1, 7);
+				got.push_back(want.back());
+			}
+			std::vector<uint16_t> tmp(size_t(dw) * sh);
+			for (int p = 0; p < planes; p++) {
+				resamplePlane_ref(src[p].data() + 1, sw + p, sw, sh, want[p].data() + 1, dw + 3, dw,
+						  dh, xt.data(), yt.data() + p * dh, tmp.data(), dw);
+				jobs.push_back({ src[p].data() + 1, sw + p, got[p].data() + 1, dw + 3,
+						 yt.data() + p * dh });
+			}
+			k->resamplePlanes(jobs.data(), planes, sw, sh, dw, dh, xt.data(), tmp.data(), dw);
+			for (int p = 0; p < planes; p++)
+				ASSERT_EQ(want[p], got[p]) << k->name << " " << sw << "->" << dw << " plane " << p;
+		}
+}
+
 TEST(KernelEquality, ResampleTapsKeepFlatInputFlat)
 {
 	// A constant image resampled with gain 1 stays exactly constant.

@@ -297,5 +297,13 @@ void resamplePlane_neon(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, 
 	columnPass(dst, dstStride, dstWidth, dstHeight, yTaps, tmp, tmpStride);
 }
 
+void resamplePlanes_neon(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			 int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			 ptrdiff_t tmpStride)
+{
+	resampleEachPlane<resamplePlane_neon>(jobs, count, srcWidth, srcHeight, dstWidth, dstHeight,
+					      xTaps, tmp, tmpStride);
+}
+
 } // namespace kernels
 } // namespace calped

@@ -14,5 +14,13 @@ void resamplePlane_opt(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, i
 			  xTaps, yTaps, tmp, tmpStride);
 }
 
+void resamplePlanes_opt(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride)
+{
+	resampleEachPlane<resamplePlane_opt>(jobs, count, srcWidth, srcHeight, dstWidth, dstHeight,
+					     xTaps, tmp, tmpStride);
+}
+
 } // namespace kernels
 } // namespace calped

@@ -69,5 +69,13 @@ void resamplePlane_ref(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, i
 	}
 }
 
+void resamplePlanes_ref(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			ptrdiff_t tmpStride)
+{
+	resampleEachPlane<resamplePlane_ref>(jobs, count, srcWidth, srcHeight, dstWidth, dstHeight,
+					     xTaps, tmp, tmpStride);
+}
+
 } // namespace kernels
 } // namespace calped

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Plane resampling with AVX2. The row pass, which the portable code does one sample at
-// a time, works here on blocks of eight outputs whose taps all fall within 16
-// consecutive source samples (any ratio below about 1.7): the 16 samples are loaded once
-// and each tap's samples are picked by lane permutes. Blocks that shrink more (up to 8
-// taps an output) multiply each output's 8 samples by its weights and add across lanes.
-// Others, and the column pass, use the shared portable body. Bit-identical to
-// ref/resample_ref.cpp.
+// a time, works here on blocks of eight outputs, four per 128-bit lane, whose taps (at
+// most four) fall within eight consecutive samples of that lane (any ratio below about
+// 1.7): byte shuffles put each output's samples side by side and 16-bit multiply-adds
+// weigh them. Samples are offset by -32768 to fit the signed multiply, and the offset
+// times the weights' sum is added back (the sums wrap exactly modulo 2^32). Blocks that
+// shrink more (up to 8 taps an output) multiply each output's 8 samples by its weights
+// and add across lanes. The column pass uses the same multiply-add on two rows at a
+// time. Bit-identical to ref/resample_ref.cpp.
 #include <immintrin.h>
 
 #include "opt/resample_body.h"
@@ -17,13 +19,30 @@ namespace {
 
 constexpr int kChunk = 64; // blocks planned at a time (bounded stack use)
 
-enum class BlockKind : int32_t { Scalar, Window, Wide };
+enum class BlockKind : int32_t { Scalar, Pairs, Wide };
 
-// Up to 3 taps per output, all within 16 consecutive samples (ratios below about 1.7).
-struct WindowPlan {
-	int32_t base;        // first source sample of the block
-	int32_t index[3][8]; // per tap: source sample - base, in [0, 16)
-	int32_t weight[3][8];
+// Samples enter the multiply-add as int16, offset by -32768; weights must fit int16 and
+// their sum keep every true total below 2^32.
+constexpr int32_t kSampleOffset = 32768;
+constexpr int32_t kMaxPairWeight = 32767;
+constexpr int32_t kMaxWeightSum = 65535;
+
+inline int32_t weightSum(const ResampleTap &t)
+{
+	int32_t sum = 0;
+	for (int j = 0; j < t.count; j++)
+		sum += t.weight[j];
+	return sum;
+}
+
+// Up to four taps per output, each lane's four outputs within eight samples from that
+// lane's base: shuffle[k] picks taps 2k and 2k+1 as adjacent int16 pairs.
+struct PairPlan {
+	int32_t base[2];        // first source sample of each lane
+	int32_t pairs;          // 1 or 2 tap pairs
+	uint8_t shuffle[2][32]; // per tap pair, bytes of the lane's 16-byte load
+	int16_t weight[2][16];  // per tap pair, (w[2k], w[2k+1]) per output
+	uint32_t bias[8];       // kSampleOffset * sum of weights + rounding half
 };
 
 // Shrinking by about 2 to 8: each output's up to 8 taps, weights 0 past its count.
@@ -36,28 +55,44 @@ struct BlockPlan {
 	BlockKind kind;
 	int32_t x0; // first output of the block
 	union {
-		WindowPlan window;
+		PairPlan pairs;
 		WidePlan wide;
 	};
 };
 
-bool planWindow(const ResampleTap *taps, int x0, int srcWidth, WindowPlan &p)
+bool planPairs(const ResampleTap *taps, int x0, int srcWidth, PairPlan &p)
 {
-	// The 16 samples start at the block's first tap, or earlier at the right edge so
-	// that they stay inside the row.
-	const int base = std::min(taps[x0].first, srcWidth - 16);
-	if (base < 0)
+	if (srcWidth < 8)
 		return false;
-	for (int i = 0; i < 8; i++) {
-		const ResampleTap &t = taps[x0 + i];
-		if (t.count > 3 || t.first < base || t.first + t.count - base > 16)
-			return false;
-		for (int j = 0; j < 3; j++) {
-			p.index[j][i] = j < t.count ? t.first + j - base : t.first - base;
-			p.weight[j][i] = j < t.count ? t.weight[j] : 0;
+	p.pairs = 1;
+	for (int lane = 0; lane < 2; lane++) {
+		// The eight samples start at the lane's first tap, or earlier at the right edge
+		// so that they stay inside the row.
+		const int base = std::min(taps[x0 + 4 * lane].first, srcWidth - 8);
+		p.base[lane] = base;
+		for (int k = 0; k < 4; k++) {
+			const int o = 4 * lane + k;
+			const ResampleTap &t = taps[x0 + o];
+			if (t.count > 4 || t.first < base || t.first + t.count - base > 8)
+				return false;
+			const int32_t sum = weightSum(t);
+			if (sum > kMaxWeightSum)
+				return false;
+			p.bias[o] = uint32_t(kSampleOffset) * uint32_t(sum) + (1u << (kQ - 1));
+			if (t.count > 2)
+				p.pairs = 2;
+			for (int j = 0; j < 4; j++) {
+				if (j < t.count && t.weight[j] > kMaxPairWeight)
+					return false;
+				// A missing tap reads the output's first sample with weight 0.
+				const int sample = (j < t.count ? t.first + j : t.first) - base;
+				const int pair = j / 2, at = 16 * lane + 4 * k + 2 * (j % 2);
+				p.shuffle[pair][at] = uint8_t(2 * sample);
+				p.shuffle[pair][at + 1] = uint8_t(2 * sample + 1);
+				p.weight[pair][2 * o + j % 2] = int16_t(j < t.count ? t.weight[j] : 0);
+			}
 		}
 	}
-	p.base = base;
 	return true;
 }
 
@@ -77,33 +112,38 @@ bool planWide(const ResampleTap *taps, int x0, int srcWidth, WidePlan &p)
 void planBlock(const ResampleTap *taps, int x0, int srcWidth, BlockPlan &p)
 {
 	p.x0 = x0;
-	if (planWindow(taps, x0, srcWidth, p.window))
-		p.kind = BlockKind::Window;
+	if (planPairs(taps, x0, srcWidth, p.pairs))
+		p.kind = BlockKind::Pairs;
 	else if (planWide(taps, x0, srcWidth, p.wide))
 		p.kind = BlockKind::Wide;
 	else
 		p.kind = BlockKind::Scalar;
 }
 
-// The 32-bit lanes of lo (samples 0-7) or hi (8-15) that `index` names.
-inline __m256i pick(__m256i lo, __m256i hi, __m256i index)
+inline __m256i loadConst(const void *p)
 {
-	const __m256i fromLo = _mm256_permutevar8x32_epi32(lo, index);
-	const __m256i fromHi = _mm256_permutevar8x32_epi32(hi, index);
-	return _mm256_blendv_epi8(fromLo, fromHi, _mm256_cmpgt_epi32(index, _mm256_set1_epi32(7)));
+	return _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p));
 }
 
-// The weighted sums of a window block's eight outputs, added to acc.
-inline __m256i windowSums(const WindowPlan &p, const uint16_t *in, __m256i acc)
+// Eight samples from each lane's base, as int16 offset by -32768.
+inline __m256i loadLanes(const uint16_t *in, const int32_t base[2])
 {
-	const __m256i s16 = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(in + p.base));
-	const __m256i lo = _mm256_cvtepu16_epi32(_mm256_castsi256_si128(s16));
-	const __m256i hi = _mm256_cvtepu16_epi32(_mm256_extracti128_si256(s16, 1));
-	for (int j = 0; j < 3; j++) {
-		const __m256i idx = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p.index[j]));
-		const __m256i w = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p.weight[j]));
-		acc = _mm256_add_epi32(acc, _mm256_mullo_epi32(pick(lo, hi, idx), w));
-	}
+	const __m256i both = _mm256_inserti128_si256(
+		_mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i *>(in + base[0]))),
+		_mm_loadu_si128(reinterpret_cast<const __m128i *>(in + base[1])), 1);
+	return _mm256_xor_si256(both, _mm256_set1_epi16(-0x8000));
+}
+
+// The rounded weighted sums of a pair block's eight outputs (before the shift).
+inline __m256i pairSums(const PairPlan &p, const uint16_t *in)
+{
+	const __m256i s = loadLanes(in, p.base);
+	__m256i acc = _mm256_add_epi32(
+		loadConst(p.bias),
+		_mm256_madd_epi16(_mm256_shuffle_epi8(s, loadConst(p.shuffle[0])), loadConst(p.weight[0])));
+	if (p.pairs > 1)
+		acc = _mm256_add_epi32(acc, _mm256_madd_epi16(_mm256_shuffle_epi8(s, loadConst(p.shuffle[1])),
+							      loadConst(p.weight[1])));
 	return acc;
 }
 
@@ -169,15 +209,124 @@ void halveRows(const uint16_t *src, ptrdiff_t srcStride, int srcHeight, int dstW
 	}
 }
 
-void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
-	     int dstWidth, const ResampleTap *xTaps, uint16_t *tmp, ptrdiff_t tmpStride)
+// The column pass: each output row from two source rows at a time, sixteen samples
+// interleaved into (row a, row b) pairs for the multiply-add. Rows whose taps do not
+// fit the 16-bit form take the portable body.
+bool columnFitsPairs(const ResampleTap &t)
+{
+	if (t.count < 2 || t.count > 4 || weightSum(t) > kMaxWeightSum)
+		return false;
+	for (int j = 0; j < t.count; j++)
+		if (t.weight[j] > kMaxPairWeight)
+			return false;
+	return true;
+}
+
+inline __m256i loadOffset(const uint16_t *p)
+{
+	return _mm256_xor_si256(_mm256_loadu_si256(reinterpret_cast<const __m256i *>(p)),
+				_mm256_set1_epi16(-0x8000));
+}
+
+// Sixteen outputs of one row: rows[j] + x for the taps' rows, w[k] their weight pairs.
+inline void columnBlock(const uint16_t *const rows[4], int count, const __m256i w[2], __m256i bias,
+			int x, uint16_t *out)
+{
+	const __m256i a = loadOffset(rows[0] + x), b = loadOffset(rows[1] + x);
+	__m256i lo = _mm256_add_epi32(bias, _mm256_madd_epi16(_mm256_unpacklo_epi16(a, b), w[0]));
+	__m256i hi = _mm256_add_epi32(bias, _mm256_madd_epi16(_mm256_unpackhi_epi16(a, b), w[0]));
+	if (count > 2) {
+		// A missing fourth tap reads the third row again with weight 0.
+		const __m256i c = loadOffset(rows[2] + x), d = loadOffset(rows[count > 3 ? 3 : 2] + x);
+		lo = _mm256_add_epi32(lo, _mm256_madd_epi16(_mm256_unpacklo_epi16(c, d), w[1]));
+		hi = _mm256_add_epi32(hi, _mm256_madd_epi16(_mm256_unpackhi_epi16(c, d), w[1]));
+	}
+	// The unpacks split each lane into samples 0-3 and 4-7; packing them in lane order
+	// restores it. Shifted sums are below 2^18: packing saturates them to 65535.
+	const __m256i v = _mm256_packus_epi32(_mm256_srli_epi32(lo, kQ), _mm256_srli_epi32(hi, kQ));
+	_mm256_storeu_si256(reinterpret_cast<__m256i *>(out + x), v);
+}
+
+void columnPass(uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
+		const ResampleTap *yTaps, const uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	for (int y = 0; y < dstHeight; y++) {
+		const ResampleTap &t = yTaps[y];
+		if (dstWidth < 16 || !columnFitsPairs(t)) {
+			resampleColumnsBody(dst + y * dstStride, dstStride, dstWidth, 1, &t, tmp, tmpStride);
+			continue;
+		}
+		const uint16_t *rows[4];
+		for (int j = 0; j < 4; j++)
+			rows[j] = tmp + (t.first + std::min(j, t.count - 1)) * tmpStride;
+		auto pair = [&](int j) {
+			const int16_t w0 = int16_t(j < t.count ? t.weight[j] : 0);
+			const int16_t w1 = int16_t(j + 1 < t.count ? t.weight[j + 1] : 0);
+			return _mm256_set1_epi32(int32_t(uint16_t(w0)) | int32_t(uint32_t(uint16_t(w1)) << 16));
+		};
+		const __m256i w[2] = { pair(0), pair(2) };
+		const __m256i bias =
+			_mm256_set1_epi32(int32_t(uint32_t(kSampleOffset) * uint32_t(weightSum(t)) + (1u << (kQ - 1))));
+		uint16_t *out = dst + y * dstStride;
+		int x = 0;
+		for (; x + 16 <= dstWidth; x += 16)
+			columnBlock(rows, t.count, w, bias, x, out);
+		// The last few: one more block ending at the row's end (same values where the
+		// blocks overlap).
+		if (x < dstWidth)
+			columnBlock(rows, t.count, w, bias, dstWidth - 16, out);
+	}
+}
+
+// The row pass of one chunk of blocks (outputs [x0, end)) over every source row.
+void rowPassChunk(const uint16_t *src, ptrdiff_t srcStride, int srcHeight, const BlockPlan *plans,
+		  int blocks, int tail, int end, const ResampleTap *xTaps, uint16_t *tmp,
+		  ptrdiff_t tmpStride)
+{
+	const __m256i half = _mm256_set1_epi32(1 << (kQ - 1)), max = _mm256_set1_epi32(65535);
+	for (int y = 0; y < srcHeight; y++) {
+		const uint16_t *in = src + y * srcStride;
+		uint16_t *out = tmp + y * tmpStride;
+		for (int b = 0; b < blocks; b++) {
+			const BlockPlan &p = plans[b];
+			const int x0 = p.x0;
+			__m256i acc;
+			if (p.kind == BlockKind::Pairs) {
+				acc = pairSums(p.pairs, in);
+			} else if (p.kind == BlockKind::Wide) {
+				acc = wideSums(p.wide, in, half);
+			} else {
+				for (int x = x0; x < x0 + 8; x++)
+					out[x] = roundQ14(tapSum(xTaps[x], in));
+				continue;
+			}
+			// Rounded unsigned sums below 2^32: shift logically, saturate to 16 bits.
+			const __m256i v = _mm256_min_epu32(_mm256_srli_epi32(acc, kQ), max);
+			const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(v, v), 0xD8);
+			_mm_storeu_si128(reinterpret_cast<__m128i *>(out + x0), _mm256_castsi256_si128(packed));
+		}
+		for (int x = tail; x < end; x++)
+			out[x] = roundQ14(tapSum(xTaps[x], in));
+	}
+}
+
+} // namespace
+
+// Chunk by chunk of outputs: the blocks are planned once, then each plane's rows and
+// columns in that chunk are resampled (tmp holds one plane's chunk at a time).
+void resamplePlanes_avx2(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			 int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			 ptrdiff_t tmpStride)
 {
 	if (isHalving(xTaps, dstWidth)) {
-		halveRows(src, srcStride, srcHeight, dstWidth, tmp, tmpStride);
+		for (int i = 0; i < count; i++) {
+			const PlaneJob &j = jobs[i];
+			halveRows(j.src, j.srcStride, srcHeight, dstWidth, tmp, tmpStride);
+			columnPass(j.dst, j.dstStride, dstWidth, dstHeight, j.yTaps, tmp, tmpStride);
+		}
 		return;
 	}
 	BlockPlan plans[kChunk + 1];
-	const __m256i half = _mm256_set1_epi32(1 << (kQ - 1)), max = _mm256_set1_epi32(65535);
 	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
 		int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
 		const int end = std::min(dstWidth, chunk + 8 * kChunk);
@@ -190,42 +339,25 @@ void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeig
 			planBlock(xTaps, dstWidth - 8, srcWidth, plans[blocks++]);
 			tail = end;
 		}
-		for (int y = 0; y < srcHeight; y++) {
-			const uint16_t *in = src + y * srcStride;
-			uint16_t *out = tmp + y * tmpStride;
-			for (int b = 0; b < blocks; b++) {
-				const BlockPlan &p = plans[b];
-				const int x0 = p.x0;
-				__m256i acc;
-				if (p.kind == BlockKind::Window) {
-					acc = windowSums(p.window, in, half);
-				} else if (p.kind == BlockKind::Wide) {
-					acc = wideSums(p.wide, in, half);
-				} else {
-					for (int x = x0; x < x0 + 8; x++)
-						out[x] = roundQ14(tapSum(xTaps[x], in));
-					continue;
-				}
-				// Rounded unsigned sums below 2^32: shift logically, saturate to 16 bits.
-				const __m256i v = _mm256_min_epu32(_mm256_srli_epi32(acc, kQ), max);
-				const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(v, v), 0xD8);
-				_mm_storeu_si128(reinterpret_cast<__m128i *>(out + x0), _mm256_castsi256_si128(packed));
-			}
-			for (int x = tail; x < end; x++)
-				out[x] = roundQ14(tapSum(xTaps[x], in));
+		// The columns this chunk's blocks write (the overlapping block starts earlier).
+		const int from = blocks > 0 ? std::min(chunk, plans[blocks - 1].x0) : chunk;
+		for (int i = 0; i < count; i++) {
+			const PlaneJob &j = jobs[i];
+			rowPassChunk(j.src, j.srcStride, srcHeight, plans, blocks, tail, end, xTaps, tmp,
+				     tmpStride);
+			columnPass(j.dst + from, j.dstStride, end - from, dstHeight, j.yTaps, tmp + from,
+				   tmpStride);
 		}
 	}
 }
-
-} // namespace
 
 void resamplePlane_avx2(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
 			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 			ptrdiff_t tmpStride)
 {
-	rowPass(src, srcStride, srcWidth, srcHeight, dstWidth, xTaps, tmp, tmpStride);
-	resampleColumnsBody(dst, dstStride, dstWidth, dstHeight, yTaps, tmp, tmpStride);
+	const PlaneJob job = { src, srcStride, dst, dstStride, yTaps };
+	resamplePlanes_avx2(&job, 1, srcWidth, srcHeight, dstWidth, dstHeight, xTaps, tmp, tmpStride);
 }
 
 } // namespace kernels

@@ -95,7 +95,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		xTaps_.resize(taps);
 		yTaps_.resize(taps);
 		yTapsGain_.resize(taps);
-		yTapsBand_.resize(taps);
+		yTapsBand_.resize(taps * kMaxTapSets);
 
 		maxLevelH_ = luvH / 4 + 2;
 		maxLevelW_ = luvW / 4 + 2;
@@ -320,18 +320,36 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 		fullRows_.begin &= ~1;
 }
 
-void Pyramid::resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst,
-			   const RowBand &rows, const kernels::ResampleTap *xTaps,
-			   const kernels::ResampleTap *yTaps, const RowBand *cols)
+void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *dst, int planes,
+			   const kernels::ResampleTap *const *yTaps, const RowBand &rows,
+			   const kernels::ResampleTap *xTaps, const RowBand *cols)
 {
-	const RowBand srcRows = sourceRows(yTaps, rows);
-	shiftTaps(yTaps, rows, srcRows.begin, yTapsBand_.data());
+	// The planes share their source rows (the channel types' gains scale the weights
+	// only), so one band of them serves every plane; each distinct yTaps is shifted once.
+	RowBand srcRows;
+	for (int p = 0; p < planes; p++)
+		srcRows.add(sourceRows(yTaps[p], rows));
+	const size_t bandTaps = yTapsBand_.size() / kMaxTapSets;
+	const kernels::ResampleTap *shiftedFrom[kMaxTapSets] = {};
+	int sets = 0;
+	kernels::PlaneJob jobs[kChannelCount];
 	// Each output column depends only on its own taps, so a range of them is exact.
-	const RowBand c = cols ? *cols : RowBand{ 0, dst.width };
+	const RowBand c = cols ? *cols : RowBand{ 0, dst[0].width };
+	for (int p = 0; p < planes; p++) {
+		int set = 0;
+		while (set < sets && shiftedFrom[set] != yTaps[p])
+			set++;
+		kernels::ResampleTap *band = yTapsBand_.data() + set * bandTaps;
+		if (set == sets) {
+			shiftTaps(yTaps[p], rows, srcRows.begin, band);
+			shiftedFrom[sets++] = yTaps[p];
+		}
+		jobs[p] = { src[p].row(srcRows.begin), src[p].stride, dst[p].row(rows.begin) + c.begin,
+			    dst[p].stride, band };
+	}
 	Plane<uint16_t> tmp = resampleTmp_.view(c.size(), srcRows.size());
-	k_->resamplePlane(src.row(srcRows.begin), src.stride, src.width, srcRows.size(),
-			  dst.row(rows.begin) + c.begin, dst.stride, c.size(), rows.size(),
-			  xTaps + c.begin, yTapsBand_.data(), tmp.data, tmp.stride);
+	k_->resamplePlanes(jobs, planes, src[0].width, srcRows.size(), c.size(), rows.size(),
+			   xTaps + c.begin, tmp.data, tmp.stride);
 }
 
 Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
@@ -394,10 +412,10 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 			const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY) : nullptr;
 			if (!yTaps)
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-			for (int c = 0; c < 3; c++) {
+			const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
+			for (int c = 0; c < 3; c++)
 				in[c] = isHalf ? halfLuv_[c].view(w1, h1) : levelLuv_[c].view(w1, h1);
-				resampleRows(source[c], in[c], r.luv, xTaps, yTaps);
-			}
+			resampleRows(source, in, 3, yTapsOf, r.luv, xTaps);
 			if (isHalf)
 				for (int c = 0; c < 3; c++)
 					source[c] = in[c];
@@ -436,17 +454,14 @@ void Pyramid::approximate(int i, const RowBand &rows, const RowBand &cols,
 	const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
 	// Channel types: colour, magnitude, orientations; each has its power-law gain.
 	const int typeOf[kChannelCount] = { 0, 0, 0, 1, 2, 2, 2, 2, 2, 2 };
-	int builtFor = -1;
-	const kernels::ResampleTap *yTaps = nullptr;
+	const kernels::ResampleTap *yTaps[kChannelCount];
 	for (int c = 0; c < kChannelCount; c++) {
-		const int type = typeOf[c];
-		if (type != builtFor) {
-			yTaps = levelTaps(i, kTapsY + type);
-			builtFor = type;
-		}
-		if (xTaps && yTaps)
-			resampleRows(src[c], out[c], rows, xTaps, yTaps, &cols);
+		yTaps[c] = c > 0 && typeOf[c] == typeOf[c - 1] ? yTaps[c - 1] : levelTaps(i, kTapsY + typeOf[c]);
+		if (!yTaps[c])
+			return;
 	}
+	if (xTaps)
+		resampleRows(src, out, kChannelCount, yTaps, rows, xTaps, &cols);
 }
 
 LevelChannels Pyramid::level(int i, const RowBand *only, const RowBand *onlyCols)

@@ -92,10 +92,12 @@ private:
 				// for the half-size image the rows smaller octaves resample)
 	};
 	void planRows(const RowBand *levelRows, int width, int height);
-	// dst's `rows` from src, in all of dst's columns or only in `cols`.
-	void resampleRows(const Plane<uint16_t> &src, const Plane<uint16_t> &dst, const RowBand &rows,
-			  const kernels::ResampleTap *xTaps, const kernels::ResampleTap *yTaps,
-			  const RowBand *cols = nullptr);
+	// dst[p]'s `rows` from src[p], in all of their columns or only in `cols`, for planes
+	// of one size sharing xTaps; yTaps[p] holds at most kMaxTapSets distinct pointers.
+	void resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *dst, int planes,
+			  const kernels::ResampleTap *const *yTaps, const RowBand &rows,
+			  const kernels::ResampleTap *xTaps, const RowBand *cols = nullptr);
+	static constexpr int kMaxTapSets = 3; // the channel types' gains
 
 	// Resampling taps of level i: across (kTapsX) and down (kTapsY, the first channel
 	// type's gain for approximated levels; kTapsY + t for channel type t), from the
