@@ -107,7 +107,21 @@ TEST(CalibratedPlan, EveryPlannedWindowHasAPlausibleHeight)
 				const bool plausible = h >= 1.4 && h <= 2.2;
 				ASSERT_EQ(plausible, inPlan[size_t(r) * cols + c] == 1)
 					<< "level " << i << " window " << r << "," << c << " height " << h;
+				ASSERT_EQ(plausible, plan.plausible(i, r, c));
 			}
+		// Each column's plausible row range is tight: its ends are plausible windows and
+		// nothing plausible lies outside it.
+		for (int c = 0; c < cols; c++) {
+			int first, last;
+			plan.plausibleRows(i, c, first, last);
+			for (int r = 0; r < rows; r++)
+				if (r < first || r > last)
+					ASSERT_FALSE(plan.plausible(i, r, c)) << "level " << i << " " << r << "," << c;
+			if (first <= last) {
+				EXPECT_TRUE(plan.plausible(i, first, c));
+				EXPECT_TRUE(plan.plausible(i, last, c));
+			}
+		}
 		planned += plan.windowCount(i);
 		all += size_t(rows) * cols;
 		levels += plan.levelNeeded(i) ? 1 : 0;

@@ -110,6 +110,39 @@ TEST_F(StaticSceneTest, ANewFrameSizeStartsAgain)
 	EXPECT_FALSE(scene_.ready());
 }
 
+TEST(StaticSceneCells, GreyIsTheCellMeanOfRPlusTwoGPlusBOverFour)
+{
+	// Random colours on a frame whose sides are not multiples of 4 (the last partial
+	// cells are left out): every cell against the formula, pixel by pixel.
+	const int w = 37, h = 22;
+	std::vector<uint8_t> rgb(size_t(w) * h * 3);
+	uint32_t seed = 12345;
+	for (auto &v : rgb) {
+		seed = seed * 1664525u + 1013904223u;
+		v = uint8_t(seed >> 24);
+	}
+	FrameInput input;
+	ASSERT_TRUE(input.init(w, h, false).ok());
+	StaticScene scene;
+	StaticRejection settings;
+	settings.enabled = true;
+	ASSERT_TRUE(scene.init(w, h, settings).ok());
+	input.begin(ImageView::rgb8(rgb.data(), w, h));
+	scene.observe(input);
+	ASSERT_EQ(scene.cellsWide(), w / 4);
+	ASSERT_EQ(scene.cellsHigh(), h / 4);
+	for (int cy = 0; cy < h / 4; cy++)
+		for (int cx = 0; cx < w / 4; cx++) {
+			uint32_t sum = 0;
+			for (int y = 4 * cy; y < 4 * cy + 4; y++)
+				for (int x = 4 * cx; x < 4 * cx + 4; x++) {
+					const uint8_t *p = &rgb[(size_t(y) * w + x) * 3];
+					sum += p[0] + 2u * p[1] + p[2];
+				}
+			ASSERT_EQ(scene.cellGrey(cx, cy), sum / 64) << cx << "," << cy;
+		}
+}
+
 TEST(StaticSceneSettings, BadSettingsAreNamed)
 {
 	StaticScene scene;

@@ -93,10 +93,13 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 		windows_.clear();
 		sparse_.clear();
 		plausible_.clear();
+		plausibleFirst_.clear();
+		plausibleLast_.clear();
 		for (int i = 0; i < scales.count; i++) {
 			first_[i] = windows_.size();
 			sparseFirst_[i] = sparse_.size();
 			gridFirst_[i] = plausible_.size();
+			colFirst_[i] = plausibleFirst_.size();
 			const PyramidLevel &l = scales.levels[i];
 			int rows, cols;
 			classifier.windowGrid(l.height + 2 * padH, l.width + 2 * padW, rows, cols);
@@ -107,6 +110,8 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 			plausible_.resize(plausible_.size() + size_t(rows) * cols, 0);
 			uint8_t *grid = plausible_.data() + gridFirst_[i];
 			int firstRow = rows, lastRow = -1;
+			plausibleFirst_.resize(plausibleFirst_.size() + size_t(cols), rows);
+			plausibleLast_.resize(plausibleLast_.size() + size_t(cols), -1);
 			for (int c = 0; c < cols; c++)
 				for (int r = 0; r < rows; r++) {
 					double x, y, w, h;
@@ -118,6 +123,9 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 					const uint32_t packed = uint32_t(r) << 16 | uint32_t(c);
 					windows_.push_back(packed);
 					grid[size_t(r) * cols + c] = 1;
+					const size_t k = colFirst_[i] + size_t(c);
+					plausibleFirst_[k] = std::min(plausibleFirst_[k], r);
+					plausibleLast_[k] = std::max(plausibleLast_[k], r);
 					firstRow = std::min(firstRow, r);
 					lastRow = std::max(lastRow, r);
 					if (r % sparseRows == 0 && c % sparseCols == 0)
@@ -128,6 +136,7 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 		first_[scales.count] = windows_.size();
 		sparseFirst_[scales.count] = sparse_.size();
 		gridFirst_[scales.count] = plausible_.size();
+		colFirst_[scales.count] = plausibleFirst_.size();
 		windows_.shrink_to_fit();
 		sparse_.shrink_to_fit();
 	} catch (const std::bad_alloc &) {

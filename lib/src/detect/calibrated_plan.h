@@ -74,6 +74,14 @@ public:
 	{
 		return plausible_[gridFirst_[i] + size_t(row) * cols_[i] + col] != 0;
 	}
+	// The plausible windows of column col of level i lie in rows [first, last] (first >
+	// last when the column has none); rows between may still be implausible.
+	void plausibleRows(int i, int col, int &first, int &last) const
+	{
+		const size_t k = colFirst_[i] + size_t(col);
+		first = plausibleFirst_[k];
+		last = plausibleLast_[k];
+	}
 	size_t gridSize() const { return plausible_.size(); }
 	size_t gridFirst(int i) const { return gridFirst_[i]; }
 
@@ -88,6 +96,8 @@ private:
 	ScaleList scales_;
 	std::vector<uint32_t> windows_, sparse_;
 	std::vector<uint8_t> plausible_;
+	std::vector<int32_t> plausibleFirst_, plausibleLast_; // per column of every level
+	size_t colFirst_[kMaxLevels + 1] = {};
 	size_t first_[kMaxLevels + 1] = {}, sparseFirst_[kMaxLevels + 1] = {};
 	size_t gridFirst_[kMaxLevels + 1] = {};
 	int rows_[kMaxLevels] = {}, cols_[kMaxLevels] = {};

@@ -176,14 +176,18 @@ size_t DetectorImpl::collectDense(int i, const DenseRegion &region, size_t n)
 		return n;
 	uint8_t *done = evaluated_.data() + plan_.gridFirst(i);
 	const int cols = plan_.cols(i);
-	for (int c = c0; c <= c1; c++)
-		for (int r = r0; r <= r1; r++) {
+	for (int c = c0; c <= c1; c++) {
+		// Only the rows where this column has plausible windows.
+		int first, last;
+		plan_.plausibleRows(i, c, first, last);
+		for (int r = std::max(r0, first); r <= std::min(r1, last); r++) {
 			const size_t k = size_t(r) * cols + c;
 			if (done[k] || !plan_.plausible(i, r, c))
 				continue;
 			done[k] = 1;
 			frameList_[n++] = uint32_t(r) << 16 | uint32_t(c);
 		}
+	}
 	return n;
 }
 

@@ -39,12 +39,15 @@ public:
 	int cellsWide() const { return cellsW_; }
 	int cellsHigh() const { return cellsH_; }
 	bool ready() const { return frames_ >= settings_.warmupFrames; }
+	// Grey level of cell (cx, cy) of the last frame (tests).
+	uint8_t cellGrey(int cx, int cy) const { return current_[size_t(cy) * cellsW_ + cx]; }
 	// Fraction of the box's cells that differ from the background (tests, tools).
 	float foreground(const Detection &box) const;
 
 private:
 	StaticRejection settings_;
 	std::vector<uint8_t> current_, background_;
+	std::vector<uint16_t> columnSums_; // one strip of four rows, added byte by byte
 	int cellsW_ = 0, cellsH_ = 0;
 	long frames_ = 0; // frames the background has seen
 };
