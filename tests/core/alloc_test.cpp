@@ -11,6 +11,7 @@
 #include <calped/calped.h>
 
 #include "common/alloc_counter.h"
+#include "detect/detector_impl.h"
 #include "pixel_formats.h"
 #include "synthetic.h"
 #include "test_data.h"
@@ -155,6 +156,10 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 			    cfg.calibratedPyramid ? ", placed levels" : "", detections,
 			    (unsigned long long)det->lastStats().windows);
 		EXPECT_GT(det->lastStats().windows, 0u);
+		// Placed levels build only the first pass's rows and new regions extend them
+		// (Pyramid::ensureRows): that path ran in these frames.
+		if (cfg.calibratedPyramid)
+			EXPECT_GT(det->impl().pyramid.rowExtensions, 0);
 	}
 }
 

@@ -284,6 +284,55 @@ int matched(const std::vector<Detection> &a, const std::vector<Detection> &b, fl
 	return n;
 }
 
+TEST(CalibratedDetector, PetsRowsPerFrameGiveTheSameDetections)
+{
+	// With placed levels, build() computes only the rows the sparse grid and the kept
+	// regions read, and new regions extend them: the detections must be those of the
+	// plan's fixed bands, exactly.
+	Model model;
+	CameraModel camera;
+	if (!loadPets(model, camera))
+		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
+	ASSERT_FALSE(::testing::Test::HasFailure());
+	DetectorConfig cfg;
+	cfg.maxWidth = 768;
+	cfg.maxHeight = 576;
+	cfg.resize = 2.0;
+	cfg.resizeInPyramid = true;
+	cfg.calibratedPyramid = true;
+	cfg.camera = &camera;
+	cfg.method = DetectionMethod::Calibrated;
+	std::unique_ptr<Detector> fixed, perFrame;
+	ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
+	ASSERT_TRUE(Detector::create(model, cfg, perFrame).ok());
+	ASSERT_TRUE(perFrame->impl().rowsPerFrame());
+	fixed->impl().setRowsPerFrame(false);
+	int detections = 0;
+	for (int k = 1; k <= 8; k++) {
+		test::RgbImage img;
+		ASSERT_TRUE(test::loadRgb(test::petsFrame(k), img));
+		const ImageView v = ImageView::rgb8(img.pixels.data(), img.width, img.height);
+		Detections a, b;
+		ASSERT_TRUE(fixed->detect(v, a).ok());
+		ASSERT_TRUE(perFrame->detect(v, b).ok());
+		ASSERT_EQ(a.count, b.count) << "frame " << k;
+		for (int i = 0; i < a.count; i++) {
+			EXPECT_EQ(a.items[i].x, b.items[i].x);
+			EXPECT_EQ(a.items[i].y, b.items[i].y);
+			EXPECT_EQ(a.items[i].h, b.items[i].h);
+			EXPECT_EQ(a.items[i].score, b.items[i].score) << "frame " << k << " detection " << i;
+		}
+		detections += a.count;
+	}
+	const long extensions = perFrame->impl().pyramid.rowExtensions;
+	std::printf("PETS frames 1-8, placed levels: %d detections either way; %ld computed-level "
+		    "extensions for new regions\n",
+		    detections, extensions);
+	EXPECT_GT(detections, 0);
+	EXPECT_GT(extensions, 0); // the extension path ran
+	EXPECT_EQ(fixed->impl().pyramid.rowExtensions, 0);
+}
+
 TEST(CalibratedDetector, PetsPlacedPyramidComputesLessFindsTheSamePeople)
 {
 	Model model;

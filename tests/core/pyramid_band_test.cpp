@@ -6,6 +6,7 @@
 
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "pixel_formats.h"
@@ -125,6 +126,102 @@ TEST(PyramidBands, RowsEqualTheFullPyramidWithPlacedLevels)
 		compareBands(test::randomImage(30 + seed, width, height), width, height, seed * 13,
 			     PixelFormat::RGB8, true);
 	}
+}
+
+// Random bands: empty, touching the top or bottom, one row, interior, whole level.
+void randomBands(std::mt19937 &rng, const ScaleList &scales, RowBand *bands)
+{
+	for (int i = 0; i < scales.count; i++) {
+		const int h = scales.levels[i].height;
+		const int kind = int(rng() % 6);
+		int b = int(rng() % h), e = b + 1 + int(rng() % h);
+		if (kind == 0)
+			b = e = 0;
+		else if (kind == 1)
+			b = 0;
+		else if (kind == 2)
+			e = h;
+		else if (kind == 3)
+			e = b + 1;
+		bands[i] = RowBand{ b, e }.clipped(h);
+	}
+}
+
+// Placed levels built in some bands, then extended to others (Pyramid::ensureRows, one
+// level at a time or all at once): the other bands equal the full pyramid's.
+void compareExtendedBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
+			  PixelFormat format, bool allAtOnce)
+{
+	ModelParams p;
+	Pyramid full, part;
+	ASSERT_TRUE(full.init(p, width, height).ok());
+	ASSERT_TRUE(part.init(p, width, height).ok());
+	const test::FormattedImage image = test::encodeImage(rgb.data(), width, height, format);
+	FrameInput input;
+	ASSERT_TRUE(input.init(width, height, false).ok());
+	ScaleList scales;
+	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
+	std::mt19937 rng(seed);
+	RowBand first[kMaxLevels], second[kMaxLevels], all[kMaxLevels];
+	randomBands(rng, scales, first);
+	randomBands(rng, scales, second);
+	for (int i = 0; i < scales.count; i++) {
+		all[i] = first[i];
+		all[i].add(second[i]);
+	}
+	int source[kMaxLevels];
+	ASSERT_TRUE(chooseComputedLevels(p, scales, all, full.channelMargin(), 5, width, height, source));
+	ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
+	ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
+	ASSERT_TRUE(part.rowsExtensible(width, height));
+	input.begin(image.view());
+	ASSERT_TRUE(full.build(input).ok());
+	input.begin(image.view());
+	ASSERT_TRUE(part.build(input, first).ok());
+	if (allAtOnce)
+		ASSERT_TRUE(part.ensureRows(input, second).ok());
+	for (int i = 0; i < scales.count; i++) {
+		if (second[i].empty())
+			continue;
+		if (!allAtOnce)
+			ASSERT_TRUE(part.ensureRows(input, i, second[i]).ok());
+		const LevelChannels got = part.level(i, &second[i]);
+		const LevelChannels want = full.level(i);
+		checkLevelRows(want, got, second[i], scales.levels[i].height, full.padCellsH(), i);
+	}
+}
+
+TEST(PyramidBands, ExtendedRowsEqualTheFullPyramid)
+{
+	// Odd sizes; RGB8 and a format converted a strip of rows at a time (the colour rows
+	// an extension needs are converted then).
+	const int width = 2 * 160 + 1, height = 2 * 124 - 1;
+	for (uint32_t seed = 1; seed <= 6; seed++) {
+		SCOPED_TRACE(seed);
+		const std::vector<uint8_t> rgb = test::randomImage(50 + seed, width, height);
+		compareExtendedBands(rgb, width, height, seed * 31, PixelFormat::RGB8, seed % 2 == 0);
+		compareExtendedBands(rgb, width, height, seed * 37, PixelFormat::NV12, seed % 2 == 1);
+	}
+}
+
+TEST(PyramidBands, RowsOfTheToolboxOctavesAreNotExtended)
+{
+	// The toolbox's octaves resample the smaller ones from the half-size image, which
+	// ensureRows does not rebuild: it says so instead of returning stale rows.
+	const int width = 320, height = 240;
+	ModelParams p;
+	Pyramid pyr;
+	ASSERT_TRUE(pyr.init(p, width, height).ok());
+	EXPECT_FALSE(pyr.rowsExtensible(width, height));
+	const std::vector<uint8_t> rgb = test::randomImage(3, width, height);
+	FrameInput input;
+	ASSERT_TRUE(input.init(width, height, false).ok());
+	input.begin(ImageView::rgb8(rgb.data(), width, height));
+	RowBand none[kMaxLevels];
+	ASSERT_TRUE(pyr.build(input, none).ok());
+	const Status st = pyr.ensureRows(input, 0, RowBand{ 0, 5 });
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("half-size"), std::string::npos) << st.message();
 }
 
 TEST(PyramidBands, PlacementIsCheckedAndSizedForTheMaximumFrame)

@@ -145,6 +145,11 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 	return Status::success();
 }
 
+RowBand CalibratedPlan::rowsOfWindowRows(int i, int firstRow, int lastRow) const
+{
+	return windowRowsRead(params_, padH_, firstRow, lastRow, scales_.levels[i].height);
+}
+
 RowBand CalibratedPlan::rowsRead(int i, const uint32_t *windows, size_t count) const
 {
 	int firstRow = rows_[i], lastRow = -1;

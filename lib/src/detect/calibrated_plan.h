@@ -52,6 +52,8 @@ public:
 	// The rows of level i (before padding) that its plausible windows read; empty when
 	// the level has none.
 	RowBand levelRows(int i) const { return levelRows_[i]; }
+	// The rows of level i that windows in window rows firstRow..lastRow read.
+	RowBand rowsOfWindowRows(int i, int firstRow, int lastRow) const;
 	// The rows of level i that these windows (row << 16 | column) read.
 	RowBand rowsRead(int i, const uint32_t *windows, size_t count) const;
 	// The columns of level i (before padding) that they read, as a range.

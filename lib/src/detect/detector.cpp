@@ -141,6 +141,11 @@ Status DetectorImpl::initCalibrated()
 				return st;
 		}
 	}
+	planLevels_ = scales.count;
+	rowsPerFrameAllowed_ = config.sparseDense && pyramid.rowsExtensible(maxWidth_, maxHeight_);
+	rowsPerFrame_ = rowsPerFrameAllowed_;
+	for (int i = 0; i < scales.count; i++)
+		sparseRows_[i] = plan_.rowsRead(i, plan_.sparseWindows(i), plan_.sparseCount(i));
 	if (config.denseRegionPersistence < 1 || config.maxDenseRegions < 1)
 		return Status::error(ErrorCode::InvalidArgument,
 				     "dense region persistence %d and capacity %d must be >= 1",
@@ -191,11 +196,37 @@ size_t DetectorImpl::collectDense(int i, const DenseRegion &region, size_t n)
 	return n;
 }
 
-double DetectorImpl::classifySparseDense()
+void DetectorImpl::planFrameRows(int firstRegion, bool sparse)
+{
+	// The plan's levels: those of maximum-size frames, the only size this mode takes.
+	for (int i = 0; i < planLevels_; i++) {
+		RowBand rows = sparse ? sparseRows_[i] : RowBand();
+		for (int r = firstRegion; r < regions_.count(); r++) {
+			const DenseRegion &g = regions_[r];
+			int r0, r1, c0, c1;
+			if (plan_.windowsInside(i, g.x0, g.y0, g.x1, g.y1, r0, r1, c0, c1))
+				rows.add(plan_.rowsOfWindowRows(i, r0, r1));
+		}
+		frameRows_[i] = rows.intersected(levelRows_[i]);
+	}
+}
+
+Status DetectorImpl::prepareLevel(int i, const RowBand &rows, const RowBand &cols,
+				  LevelChannels &out)
+{
+	if (rowsPerFrame_) {
+		const Status st = pyramid.ensureRows(input_, i, rows);
+		if (!st.ok())
+			return st;
+	}
+	out = pyramid.level(i, &rows, &cols);
+	return Status::success();
+}
+
+Status DetectorImpl::classifySparseDense(double &ms)
 {
 	const ScaleList &scales = pyramid.scales();
 	std::fill(evaluated_.begin(), evaluated_.end(), uint8_t(0));
-	double ms = 0;
 	// Pass 1, every level: the sparse grid and the regions kept from earlier frames.
 	const int oldRegions = regions_.count();
 	for (int i = 0; i < scales.count; i++) {
@@ -219,7 +250,11 @@ double DetectorImpl::classifySparseDense()
 		// wider than the sparse grid's at its ends.
 		const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
 		const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
-		ms += classifyList(i, pyramid.level(i, &rows, &cols), frameList_.data(), n);
+		LevelChannels level;
+		const Status st = prepareLevel(i, rows, cols, level);
+		if (!st.ok())
+			return st;
+		ms += classifyList(i, level, frameList_.data(), n);
 		stats.levels++;
 	}
 	const auto tRegions = Clock::now();
@@ -235,7 +270,14 @@ double DetectorImpl::classifySparseDense()
 	for (int k = 0; k < found; k++)
 		regions_.addAround(candidates_[order_[k]]);
 	stats.msCandidates += msSince(tRegions);
-	// Pass 2: the new regions' windows, on the levels that have any.
+	// Pass 2: the new regions' windows, on the levels that have any. The rows they
+	// read that pass 1 did not are computed first, for all levels at once.
+	if (rowsPerFrame_ && regions_.count() > oldRegions) {
+		planFrameRows(oldRegions, false);
+		const Status st = pyramid.ensureRows(input_, frameRows_);
+		if (!st.ok())
+			return st;
+	}
 	for (int i = 0; i < scales.count && regions_.count() > oldRegions; i++) {
 		if (!levelNeeded_[i])
 			continue;
@@ -250,9 +292,13 @@ double DetectorImpl::classifySparseDense()
 		// Only the rows and columns these windows read (the new regions are small).
 		const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
 		const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
-		ms += classifyList(i, pyramid.level(i, &rows, &cols), frameList_.data(), n);
+		LevelChannels level;
+		const Status st = prepareLevel(i, rows, cols, level);
+		if (!st.ok())
+			return st;
+		ms += classifyList(i, level, frameList_.data(), n);
 	}
-	return ms;
+	return Status::success();
 }
 
 void DetectorImpl::addWorldCoordinates(Detection *boxes, int n) const
@@ -343,16 +389,26 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	stats.msResize = msSince(tResize);
 
 	const bool calibrated = config.method == DetectionMethod::Calibrated;
-	st = pyramid.build(input_, calibrated ? levelRows_ : nullptr);
+	const bool sparseDense = calibrated && config.sparseDense;
+	const RowBand *rows = nullptr;
+	if (sparseDense && rowsPerFrame_) {
+		planFrameRows(0, true);
+		rows = frameRows_;
+	} else if (calibrated) {
+		rows = levelRows_;
+	}
+	st = pyramid.build(input_, rows);
 	if (!st.ok())
 		return st;
 
 	const ScaleList &scales = pyramid.scales();
 	candidateCount_ = 0;
 	double msClassify = 0;
-	const bool sparseDense = calibrated && config.sparseDense;
-	if (sparseDense)
-		msClassify = classifySparseDense();
+	if (sparseDense) {
+		st = classifySparseDense(msClassify);
+		if (!st.ok())
+			return st;
+	}
 	for (int i = 0; i < scales.count && !sparseDense; i++) {
 		if (calibrated && !levelNeeded_[i])
 			continue;

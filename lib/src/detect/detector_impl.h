@@ -28,6 +28,10 @@ public:
 	FrameStats stats;
 	Pyramid pyramid;
 	Classifier classifier;
+	// Whether build() computes only the first pass's rows and extends them on demand
+	// (set at init when the pyramid can; tests turn it off to compare).
+	bool rowsPerFrame() const { return rowsPerFrame_; }
+	void setRowsPerFrame(bool on) { rowsPerFrame_ = on && rowsPerFrameAllowed_; }
 
 private:
 	Status checkImage(const ImageView &image) const;
@@ -37,8 +41,14 @@ private:
 	// Classify the listed windows of one level and keep the hits; returns ms spent.
 	double classifyList(int level, const LevelChannels &channels, const uint32_t *windows,
 			    size_t count);
-	// Thesis 3.2: sparse grid and existing dense regions, new regions, their windows.
-	double classifySparseDense();
+	// Thesis 3.2: sparse grid and existing dense regions, new regions, their windows;
+	// adds the classification time to ms.
+	Status classifySparseDense(double &ms);
+	// The rows of each level (frameRows_) that the windows of regions firstRegion..
+	// read, and with `sparse` the sparse grid's too (the first pass's).
+	void planFrameRows(int firstRegion, bool sparse);
+	// Level i prepared in `rows` and `cols` for the listed windows.
+	Status prepareLevel(int i, const RowBand &rows, const RowBand &cols, LevelChannels &out);
 	// Windows of level i inside region r not evaluated yet, appended to frameList_.
 	size_t collectDense(int i, const DenseRegion &r, size_t n);
 	// Ground position and world height of the final detections.
@@ -52,6 +62,12 @@ private:
 	CalibratedPlan plan_;
 	bool levelNeeded_[kMaxLevels] = {};
 	RowBand levelRows_[kMaxLevels]; // calibrated: the rows of each level its windows read
+	// Sparse-dense mode with a pyramid that can extend its rows: build() computes only
+	// what the first pass reads (frameRows_), new regions extend it (Pyramid::ensureRows).
+	bool rowsPerFrame_ = false, rowsPerFrameAllowed_ = false;
+	int planLevels_ = 0;
+	RowBand sparseRows_[kMaxLevels]; // the rows the sparse grid reads
+	RowBand frameRows_[kMaxLevels];
 	DenseRegions regions_;
 	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
 	std::vector<uint32_t> frameList_;

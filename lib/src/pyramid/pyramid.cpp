@@ -438,6 +438,165 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 	return Status::success();
 }
 
+bool Pyramid::rowsExtensible(int width, int height) const
+{
+	ScaleList scales;
+	return scalesFor(width, height, scales).ok() && halfLevelOf(params_, scales) < 0;
+}
+
+Status Pyramid::ensureRows(FrameInput &input, int i, const RowBand &wanted)
+{
+	const PyramidLevel &l = scales_.levels[i];
+	LevelRows &r = rows_[i];
+	const RowBand raw = wanted.clipped(l.height).grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
+	if (r.raw.contains(raw))
+		return Status::success();
+	if (halfLevel_ >= 0)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "level %d rows %d-%d were not built (a half-size image is in use)", i,
+				     wanted.begin, wanted.end);
+	const auto t0 = Clock::now();
+	Status st = Status::success();
+	if (l.computed) {
+		st = extendComputed(input, i, raw);
+	} else {
+		const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
+		if (!taps)
+			return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+		const RowBand src = sourceRows(taps, raw);
+		if (!rows_[l.source].raw.contains(src))
+			st = extendComputed(input, l.source, src);
+	}
+	if (st.ok()) {
+		r.wanted.add(wanted.clipped(l.height));
+		r.raw.add(raw);
+	}
+	msChannels += msSince(t0);
+	return st;
+}
+
+Status Pyramid::ensureRows(FrameInput &input, const RowBand *wanted)
+{
+	if (halfLevel_ >= 0)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "rows cannot be extended: a half-size image is in use");
+	// What each computed level must hold: its own rows and its approximated levels'
+	// source rows.
+	RowBand need[kMaxLevels];
+	RowBand raw[kMaxLevels];
+	for (int i = 0; i < scales_.count; i++) {
+		const PyramidLevel &l = scales_.levels[i];
+		raw[i] = wanted[i].clipped(l.height).grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
+		if (raw[i].empty() || rows_[i].raw.contains(raw[i]))
+			continue;
+		if (l.computed) {
+			need[i].add(raw[i]);
+		} else {
+			const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
+			if (!taps)
+				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+			need[l.source].add(sourceRows(taps, raw[i]));
+		}
+	}
+	const auto t0 = Clock::now();
+	for (int i = 0; i < scales_.count; i++) {
+		if (need[i].empty() || rows_[i].raw.contains(need[i]))
+			continue;
+		const Status st = extendComputed(input, i, need[i]);
+		if (!st.ok())
+			return st;
+	}
+	for (int i = 0; i < scales_.count; i++) {
+		rows_[i].wanted.add(wanted[i].clipped(scales_.levels[i].height));
+		rows_[i].raw.add(raw[i]);
+	}
+	msChannels += msSince(t0);
+	return Status::success();
+}
+
+Status Pyramid::extendComputed(FrameInput &input, int i, const RowBand &need)
+{
+	const PyramidLevel &l = scales_.levels[i];
+	LevelRows &r = rows_[i];
+	RowBand hull = r.raw;
+	hull.add(need);
+	// The rows this frame does not have yet: above and below its band.
+	const RowBand parts[2] = { r.raw.empty() ? hull : RowBand{ hull.begin, r.raw.begin },
+				   r.raw.empty() ? RowBand() : RowBand{ r.raw.end, hull.end } };
+	const int w1 = l.width * 4, h1 = l.height * 4;
+	const bool native = w1 == width_ && h1 == height_;
+	const kernels::ResampleTap *xTaps = native ? nullptr : levelTaps(i, kTapsX);
+	const kernels::ResampleTap *yTaps = native || !xTaps ? nullptr : levelTaps(i, kTapsY);
+	if (!native && !yTaps)
+		return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+	Plane<uint16_t> luv[3], in[3];
+	for (int c = 0; c < 3; c++) {
+		luv[c] = luv_[c].view(width_, height_);
+		in[c] = native ? luv[c] : levelLuv_[c].view(w1, h1);
+	}
+	Plane<uint16_t> out[kChannelCount];
+	realLevelPlanes(i, out);
+	for (const RowBand &part : parts) {
+		if (part.empty())
+			continue;
+		// Its colour rows with the channels' margin, as build() plans them.
+		const RowBand chan = RowBand{ 4 * part.begin - channelMargin_, 4 * part.end + channelMargin_ }
+					     .clipped(h1);
+		if (native) {
+			convertLuvRows(input, chan);
+		} else {
+			// The level's colour image is shared by the computed levels: resample
+			// these rows again from the whole image.
+			convertLuvRows(input, sourceRows(yTaps, chan));
+			const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
+			resampleRows(luv, in, 3, yTapsOf, chan, xTaps);
+		}
+		// The band's edge rows are not exact: compute into the approximation buffer
+		// (free between levels) and keep only the part's rows.
+		Plane<uint16_t> scratch[kChannelCount];
+		planesAt(approx_.data(), l.width, chan.size() / 4, scratch);
+		Plane<const uint16_t> band[3];
+		for (int c = 0; c < 3; c++)
+			band[c] = { in[c].row(chan.begin), w1, chan.size(), in[c].stride };
+		channels_.compute(band, w1, chan.size(), scratch);
+		for (int c = 0; c < kChannelCount; c++)
+			for (int y = part.begin; y < part.end; y++)
+				std::memcpy(out[c].row(y), scratch[c].row(y - chan.begin / 4),
+					    sizeof(uint16_t) * l.width);
+	}
+	if (r.raw.empty())
+		computedCount++;
+	rowExtensions++;
+	r.raw = hull;
+	return Status::success();
+}
+
+void Pyramid::convertLuvRows(FrameInput &input, RowBand rows)
+{
+	rows = rows.clipped(height_);
+	if (rows.empty() || fullRows_.contains(rows))
+		return;
+	Plane<uint16_t> luv[3];
+	for (int c = 0; c < 3; c++)
+		luv[c] = luv_[c].view(width_, height_);
+	// The rows above and below those converted; strips start on even rows (4:2:0).
+	const RowBand parts[2] = { fullRows_.empty() ? rows : RowBand{ rows.begin, fullRows_.begin },
+				   fullRows_.empty() ? RowBand() : RowBand{ fullRows_.end, rows.end } };
+	const int strip = input.stripRows();
+	for (const RowBand &part : parts) {
+		if (part.empty())
+			continue;
+		for (int y0 = part.begin & ~1; y0 < part.end; y0 += strip) {
+			const int n = std::min(strip, part.end - y0);
+			ptrdiff_t stride;
+			const uint8_t *rgb = input.rows(y0, n, stride);
+			k_->rgbToLuv(luvTables_, rgb, stride, width_, n, luv[0].row(y0), luv[1].row(y0),
+				     luv[2].row(y0), luv[0].stride);
+		}
+	}
+	fullRows_.add(rows);
+}
+
 void Pyramid::realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount])
 {
 	const PyramidLevel &l = scales_.levels[i];

@@ -52,6 +52,19 @@ public:
 		return build(input, levelRows);
 	}
 
+	// After build() with bands: make level i preparable in rows `wanted` too (level()
+	// then takes them), computing the missing rows of its computed level exactly, and
+	// the colour rows they need, from the same `input`. Lets a caller build only the
+	// rows it expects and extend them when it finds it needs more. Without a
+	// half-size source image only (rowsExtensible); no allocation.
+	Status ensureRows(FrameInput &input, int i, const RowBand &wanted);
+	// The same for every level at once (wanted[i], one per level of scales()): each
+	// computed level is extended once, for all the levels it serves.
+	Status ensureRows(FrameInput &input, const RowBand *wanted);
+	// Whether ensureRows() works for images of this size (their computed levels are
+	// all resampled from the image itself, as with placed levels).
+	bool rowsExtensible(int width, int height) const;
+
 	// The scale list build() will use for an image of this size (for setup).
 	Status scalesFor(int width, int height, ScaleList &out) const;
 
@@ -77,8 +90,10 @@ public:
 	int padCellsH() const { return padH_; }
 	int padCellsW() const { return padW_; }
 
-	// Levels whose channels the last build() computed.
+	// Levels whose channels the last build() computed (or ensureRows() began).
 	int computedCount = 0;
+	// Computed levels ensureRows() has extended since init (tests, tuning).
+	long rowExtensions = 0;
 	// Time spent in the last build() / level() calls, for FrameStats.
 	double msChannels = 0, msApprox = 0, msSmooth = 0;
 
@@ -112,6 +127,10 @@ private:
 	// scratch buffer (valid until the next call of the same kind). nullptr: the ratio is
 	// beyond the resampler.
 	const kernels::ResampleTap *levelTaps(int i, int kind);
+	// ensureRows(): channel rows `need` of computed level i added to those this frame
+	// has, and the whole-image colour rows `rows`.
+	Status extendComputed(FrameInput &input, int i, const RowBand &need);
+	void convertLuvRows(FrameInput &input, RowBand rows);
 	void approximate(int i, const RowBand &rows, const RowBand &cols,
 			 Plane<uint16_t> out[kChannelCount]);
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);

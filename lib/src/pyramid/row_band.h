@@ -30,6 +30,12 @@ struct RowBand {
 		begin = std::min(begin, o.begin);
 		end = std::max(end, o.end);
 	}
+	// The rows in both.
+	RowBand intersected(const RowBand &o) const
+	{
+		RowBand b{ std::max(begin, o.begin), std::min(end, o.end) };
+		return b.empty() ? RowBand{} : b;
+	}
 	RowBand clipped(int rows) const
 	{
 		RowBand b{ std::max(begin, 0), std::min(end, rows) };
