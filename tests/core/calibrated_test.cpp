@@ -173,6 +173,19 @@ bool loadPets(Model &model, CameraModel &camera)
 	return true;
 }
 
+// PETS view 1 at resize 2 with this camera: the frame resized first, or (inPyramid) in
+// the pyramid.
+DetectorConfig petsConfig(const CameraModel &camera, bool inPyramid)
+{
+	DetectorConfig cfg;
+	cfg.maxWidth = 768;
+	cfg.maxHeight = 576;
+	cfg.resize = 2.0;
+	cfg.resizeInPyramid = inPyramid;
+	cfg.camera = &camera;
+	return cfg;
+}
+
 TEST(CalibratedDetector, PetsFewerWindowsSameDetections)
 {
 	Model model;
@@ -182,11 +195,7 @@ TEST(CalibratedDetector, PetsFewerWindowsSameDetections)
 	ASSERT_FALSE(::testing::Test::HasFailure());
 
 	std::unique_ptr<Detector> generic, calibrated;
-	DetectorConfig cfg;
-	cfg.maxWidth = 768;
-	cfg.maxHeight = 576;
-	cfg.resize = 2.0;
-	cfg.camera = &camera;
+	DetectorConfig cfg = petsConfig(camera, false);
 	ASSERT_TRUE(Detector::create(model, cfg, generic).ok());
 	cfg.method = DetectionMethod::Calibrated;
 	cfg.boxVoting = false; // compares the windows themselves (voting moves boxes)
@@ -294,13 +303,8 @@ TEST(CalibratedDetector, PetsRowsPerFrameGiveTheSameDetections)
 	if (!loadPets(model, camera))
 		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
 	ASSERT_FALSE(::testing::Test::HasFailure());
-	DetectorConfig cfg;
-	cfg.maxWidth = 768;
-	cfg.maxHeight = 576;
-	cfg.resize = 2.0;
-	cfg.resizeInPyramid = true;
+	DetectorConfig cfg = petsConfig(camera, true);
 	cfg.calibratedPyramid = true;
-	cfg.camera = &camera;
 	cfg.method = DetectionMethod::Calibrated;
 	std::unique_ptr<Detector> fixed, perFrame;
 	ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
@@ -341,12 +345,7 @@ TEST(CalibratedDetector, PetsPlacedPyramidComputesLessFindsTheSamePeople)
 		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
 	ASSERT_FALSE(::testing::Test::HasFailure());
 
-	DetectorConfig cfg;
-	cfg.maxWidth = 768;
-	cfg.maxHeight = 576;
-	cfg.resize = 2.0;
-	cfg.resizeInPyramid = true;
-	cfg.camera = &camera;
+	DetectorConfig cfg = petsConfig(camera, true);
 	cfg.method = DetectionMethod::Calibrated;
 	std::unique_ptr<Detector> octaves, placed;
 	ASSERT_TRUE(Detector::create(model, cfg, octaves).ok());

@@ -38,6 +38,28 @@ void checkLevelRows(const LevelChannels &full, const LevelChannels &part, const 
 	EXPECT_EQ(mismatches, 0) << "level " << level;
 }
 
+// Random bands: empty, touching the top or bottom, one row, interior, beyond the level
+// (the pyramid clips it), whole level.
+void randomBands(std::mt19937 &rng, const ScaleList &scales, RowBand *bands)
+{
+	for (int i = 0; i < scales.count; i++) {
+		const int h = scales.levels[i].height;
+		const int kind = int(rng() % 6);
+		int b = int(rng() % h), e = b + 1 + int(rng() % h);
+		if (kind == 0)
+			b = e = 0;
+		else if (kind == 1)
+			b = 0;
+		else if (kind == 2)
+			e = h;
+		else if (kind == 3)
+			e = b + 1;
+		else if (kind == 4)
+			b = -3, e = h + 5;
+		bands[i] = RowBand{ b, e };
+	}
+}
+
 void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
 		  PixelFormat format = PixelFormat::RGB8, bool placed = false)
 {
@@ -53,25 +75,9 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 	ScaleList scales;
 	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
 
-	// Random bands: empty, touching the top or bottom, one row, interior, whole level.
 	std::mt19937 rng(seed);
 	RowBand bands[kMaxLevels];
-	for (int i = 0; i < scales.count; i++) {
-		const int h = scales.levels[i].height;
-		const int kind = int(rng() % 6);
-		int b = int(rng() % h), e = b + 1 + int(rng() % h);
-		if (kind == 0)
-			b = e = 0;
-		else if (kind == 1)
-			b = 0;
-		else if (kind == 2)
-			e = h;
-		else if (kind == 3)
-			e = b + 1;
-		else if (kind == 4)
-			b = -3, e = h + 5; // beyond the level: clipped
-		bands[i] = RowBand{ b, e };
-	}
+	randomBands(rng, scales, bands);
 	if (placed) {
 		// Both pyramids compute the levels placed for these bands.
 		int source[kMaxLevels];
@@ -128,25 +134,6 @@ TEST(PyramidBands, RowsEqualTheFullPyramidWithPlacedLevels)
 	}
 }
 
-// Random bands: empty, touching the top or bottom, one row, interior, whole level.
-void randomBands(std::mt19937 &rng, const ScaleList &scales, RowBand *bands)
-{
-	for (int i = 0; i < scales.count; i++) {
-		const int h = scales.levels[i].height;
-		const int kind = int(rng() % 6);
-		int b = int(rng() % h), e = b + 1 + int(rng() % h);
-		if (kind == 0)
-			b = e = 0;
-		else if (kind == 1)
-			b = 0;
-		else if (kind == 2)
-			e = h;
-		else if (kind == 3)
-			e = b + 1;
-		bands[i] = RowBand{ b, e }.clipped(h);
-	}
-}
-
 // Placed levels built in some bands, then extended to others (Pyramid::ensureRows, one
 // level at a time or all at once): the other bands equal the full pyramid's.
 void compareExtendedBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
@@ -166,6 +153,7 @@ void compareExtendedBands(const std::vector<uint8_t> &rgb, int width, int height
 	randomBands(rng, scales, first);
 	randomBands(rng, scales, second);
 	for (int i = 0; i < scales.count; i++) {
+		second[i] = second[i].clipped(scales.levels[i].height);
 		all[i] = first[i];
 		all[i].add(second[i]);
 	}

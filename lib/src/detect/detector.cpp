@@ -211,15 +211,17 @@ void DetectorImpl::planFrameRows(int firstRegion, bool sparse)
 	}
 }
 
-Status DetectorImpl::prepareLevel(int i, const RowBand &rows, const RowBand &cols,
-				  LevelChannels &out)
+Status DetectorImpl::classifyListed(int i, size_t n, double &ms)
 {
+	// Level i prepared only in the rows and columns these windows read.
+	const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
+	const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
 	if (rowsPerFrame_) {
 		const Status st = pyramid.ensureRows(input_, i, rows);
 		if (!st.ok())
 			return st;
 	}
-	out = pyramid.level(i, &rows, &cols);
+	ms += classifyList(i, pyramid.level(i, &rows, &cols), frameList_.data(), n);
 	return Status::success();
 }
 
@@ -246,15 +248,10 @@ Status DetectorImpl::classifySparseDense(double &ms)
 		stats.sparseWindows += sparseN;
 		stats.denseWindows += n - sparseN;
 		stats.msCandidates += msSince(tList);
-		// Only the rows and columns these windows read: the plausible windows' band is
-		// wider than the sparse grid's at its ends.
-		const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
-		const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
-		LevelChannels level;
-		const Status st = prepareLevel(i, rows, cols, level);
+		// (The plausible windows' band is wider than the sparse grid's at its ends.)
+		const Status st = classifyListed(i, n, ms);
 		if (!st.ok())
 			return st;
-		ms += classifyList(i, level, frameList_.data(), n);
 		stats.levels++;
 	}
 	const auto tRegions = Clock::now();
@@ -289,14 +286,9 @@ Status DetectorImpl::classifySparseDense(double &ms)
 		if (n == 0)
 			continue;
 		stats.denseWindows += n;
-		// Only the rows and columns these windows read (the new regions are small).
-		const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
-		const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
-		LevelChannels level;
-		const Status st = prepareLevel(i, rows, cols, level);
+		const Status st = classifyListed(i, n, ms); // the new regions are small
 		if (!st.ok())
 			return st;
-		ms += classifyList(i, level, frameList_.data(), n);
 	}
 	return Status::success();
 }

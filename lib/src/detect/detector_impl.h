@@ -47,8 +47,8 @@ private:
 	// The rows of each level (frameRows_) that the windows of regions firstRegion..
 	// read, and with `sparse` the sparse grid's too (the first pass's).
 	void planFrameRows(int firstRegion, bool sparse);
-	// Level i prepared in `rows` and `cols` for the listed windows.
-	Status prepareLevel(int i, const RowBand &rows, const RowBand &cols, LevelChannels &out);
+	// Classify the first n windows of frameList_ on level i, adding the time to ms.
+	Status classifyListed(int i, size_t n, double &ms);
 	// Windows of level i inside region r not evaluated yet, appended to frameList_.
 	size_t collectDense(int i, const DenseRegion &r, size_t n);
 	// Ground position and world height of the final detections.
