@@ -114,9 +114,11 @@ TEST(CalibratedPlan, EveryPlannedWindowHasAPlausibleHeight)
 		for (int c = 0; c < cols; c++) {
 			int first, last;
 			plan.plausibleRows(i, c, first, last);
-			for (int r = 0; r < rows; r++)
-				if (r < first || r > last)
+			for (int r = 0; r < rows; r++) {
+				if (r < first || r > last) {
 					ASSERT_FALSE(plan.plausible(i, r, c)) << "level " << i << " " << r << "," << c;
+				}
+			}
 			if (first <= last) {
 				EXPECT_TRUE(plan.plausible(i, first, c));
 				EXPECT_TRUE(plan.plausible(i, last, c));

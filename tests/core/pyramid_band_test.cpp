@@ -166,13 +166,15 @@ void compareExtendedBands(const std::vector<uint8_t> &rgb, int width, int height
 	ASSERT_TRUE(full.build(input).ok());
 	input.begin(image.view());
 	ASSERT_TRUE(part.build(input, first).ok());
-	if (allAtOnce)
+	if (allAtOnce) {
 		ASSERT_TRUE(part.ensureRows(input, second).ok());
+	}
 	for (int i = 0; i < scales.count; i++) {
 		if (second[i].empty())
 			continue;
-		if (!allAtOnce)
+		if (!allAtOnce) {
 			ASSERT_TRUE(part.ensureRows(input, i, second[i]).ok());
+		}
 		const LevelChannels got = part.level(i, &second[i]);
 		const LevelChannels want = full.level(i);
 		checkLevelRows(want, got, second[i], scales.levels[i].height, full.padCellsH(), i);

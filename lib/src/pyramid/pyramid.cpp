@@ -369,16 +369,10 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width, height);
-	// Only the rows some level reads, a strip of RGB rows at a time (the whole band at
-	// once when the frame is RGB8 already).
-	const int strip = input.stripRows();
-	for (int y0 = fullRows_.begin; y0 < fullRows_.end; y0 += strip) {
-		const int rows = std::min(strip, fullRows_.end - y0);
-		ptrdiff_t stride;
-		const uint8_t *rgb = input.rows(y0, rows, stride);
-		k_->rgbToLuv(luvTables_, rgb, stride, width, rows, luv[0].row(y0), luv[1].row(y0),
-			     luv[2].row(y0), luv[0].stride);
-	}
+	// Only the rows some level reads.
+	const RowBand luvRows = fullRows_;
+	fullRows_ = RowBand();
+	convertLuvRows(input, luvRows);
 
 	// Computed levels, from the largest: each is resampled from the whole image, or
 	// from the half-size image once that exists (as the toolbox does).
@@ -447,32 +441,12 @@ bool Pyramid::rowsExtensible(int width, int height) const
 Status Pyramid::ensureRows(FrameInput &input, int i, const RowBand &wanted)
 {
 	const PyramidLevel &l = scales_.levels[i];
-	LevelRows &r = rows_[i];
 	const RowBand raw = wanted.clipped(l.height).grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
-	if (r.raw.contains(raw))
-		return Status::success();
-	if (halfLevel_ >= 0)
-		return Status::error(ErrorCode::InvalidArgument,
-				     "level %d rows %d-%d were not built (a half-size image is in use)", i,
-				     wanted.begin, wanted.end);
-	const auto t0 = Clock::now();
-	Status st = Status::success();
-	if (l.computed) {
-		st = extendComputed(input, i, raw);
-	} else {
-		const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
-		if (!taps)
-			return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-		const RowBand src = sourceRows(taps, raw);
-		if (!rows_[l.source].raw.contains(src))
-			st = extendComputed(input, l.source, src);
-	}
-	if (st.ok()) {
-		r.wanted.add(wanted.clipped(l.height));
-		r.raw.add(raw);
-	}
-	msChannels += msSince(t0);
-	return st;
+	if (rows_[i].raw.contains(raw))
+		return Status::success(); // the per-window fast path
+	RowBand only[kMaxLevels];
+	only[i] = wanted;
+	return ensureRows(input, only);
 }
 
 Status Pyramid::ensureRows(FrameInput &input, const RowBand *wanted)
@@ -579,7 +553,9 @@ void Pyramid::convertLuvRows(FrameInput &input, RowBand rows)
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width_, height_);
-	// The rows above and below those converted; strips start on even rows (4:2:0).
+	// The rows above and below those converted, a strip of RGB rows at a time (the
+	// whole band at once when the frame is RGB8 already); strips start on even rows
+	// (4:2:0 chroma).
 	const RowBand parts[2] = { fullRows_.empty() ? rows : RowBand{ rows.begin, fullRows_.begin },
 				   fullRows_.empty() ? RowBand() : RowBand{ fullRows_.end, rows.end } };
 	const int strip = input.stripRows();

@@ -127,8 +127,8 @@ private:
 	// scratch buffer (valid until the next call of the same kind). nullptr: the ratio is
 	// beyond the resampler.
 	const kernels::ResampleTap *levelTaps(int i, int kind);
-	// ensureRows(): channel rows `need` of computed level i added to those this frame
-	// has, and the whole-image colour rows `rows`.
+	// Channel rows `need` of computed level i added to those this frame has; the
+	// whole-image colour rows `rows` converted if they are not yet (build() too).
 	Status extendComputed(FrameInput &input, int i, const RowBand &need);
 	void convertLuvRows(FrameInput &input, RowBand rows);
 	void approximate(int i, const RowBand &rows, const RowBand &cols,
