@@ -2,8 +2,8 @@
 // Per-frame time of the generic detector on a folder of frames, one core: frames are
 // decoded first, then each is detected `--repeat` times; prints median and mean per
 // stage. Usage:
-//   bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--count N]
-//                [--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--format NAME]
+//   bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--first F]
+//                [--count N] [--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--format NAME]
 // --format converts the decoded frames to a camera pixel format first (NV12, YUYV,
 // BayerRGGB8, ...: docs/pixel-formats.md), so the detector's input conversion is timed.
 #include <algorithm>
@@ -42,7 +42,7 @@ double mean(const std::vector<double> &v)
 
 int usage()
 {
-	std::fprintf(stderr, "usage: bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--count N] "
+	std::fprintf(stderr, "usage: bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--first F] [--count N] "
 			     "[--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--format NAME]\n");
 	return 2;
 }
@@ -53,7 +53,7 @@ int main(int argc, char **argv)
 {
 	std::string modelPath, framesDir, calibPath, formatName = "RGB8";
 	double resize = 1.0;
-	int count = 50, repeat = 1;
+	int first = 1, count = 50, repeat = 1; // first: 1-based, in name order
 	bool calibrated = false, resizeInPyramid = false, calibratedPyramid = false;
 	for (int i = 1; i < argc; i++) {
 		const std::string a = argv[i];
@@ -69,6 +69,8 @@ int main(int argc, char **argv)
 			framesDir = argv[++i];
 		else if (a == "--resize")
 			resize = std::atof(argv[++i]);
+		else if (a == "--first")
+			first = std::atoi(argv[++i]);
 		else if (a == "--count")
 			count = std::atoi(argv[++i]);
 		else if (a == "--repeat")
@@ -80,7 +82,7 @@ int main(int argc, char **argv)
 		else
 			return usage();
 	}
-	if (modelPath.empty() || framesDir.empty() || count < 1 || repeat < 1)
+	if (modelPath.empty() || framesDir.empty() || first < 1 || count < 1 || repeat < 1)
 		return usage();
 	PixelFormat format = PixelFormat::RGB8;
 	bool formatKnown = false;
@@ -114,6 +116,7 @@ int main(int argc, char **argv)
 		closedir(d);
 	}
 	std::sort(names.begin(), names.end());
+	names.erase(names.begin(), names.begin() + std::min(names.size(), size_t(first - 1)));
 	if (names.size() > size_t(count))
 		names.resize(count);
 	std::vector<test::RgbImage> frames(names.size());
