@@ -158,8 +158,9 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 		EXPECT_GT(det->lastStats().windows, 0u);
 		// Placed levels build only the first pass's rows and new regions extend them
 		// (Pyramid::ensureRows): that path ran in these frames.
-		if (cfg.calibratedPyramid)
+		if (cfg.calibratedPyramid) {
 			EXPECT_GT(det->impl().pyramid.rowExtensions, 0);
+		}
 	}
 }
 

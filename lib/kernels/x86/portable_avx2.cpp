@@ -15,12 +15,6 @@ void smoothTri1_avx2(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
 	smoothTri1Body(src, srcStride, dst, dstStride, width, height, rowTmp);
 }
 
-void triSumR_avx2(const uint16_t *src, ptrdiff_t srcStride, uint32_t *dst, ptrdiff_t dstStride,
-		  int width, int height, int r, uint32_t *scratch)
-{
-	triSumRBody(src, srcStride, dst, dstStride, width, height, r, scratch);
-}
-
 void shrink4_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
 		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch)
 {
