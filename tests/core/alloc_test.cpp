@@ -138,11 +138,14 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 	cfg.method = DetectionMethod::Calibrated;
 	cfg.camera = &camera;
 	cfg.cascadeThreshold = -10.0f;
-	// The resized frame, the resize inside the pyramid, and levels placed among the needed
-	// ones (DetectorConfig::calibratedPyramid, which needs the resize in the pyramid).
-	for (int variant = 0; variant < 3; variant++) {
+	// The resized frame, the resize inside the pyramid, levels placed among the needed
+	// ones (DetectorConfig::calibratedPyramid, which needs the resize in the pyramid), and
+	// these with the static scene's gate of the sparse grid.
+	for (int variant = 0; variant < 4; variant++) {
 		cfg.resizeInPyramid = variant > 0;
-		cfg.calibratedPyramid = variant == 2;
+		cfg.calibratedPyramid = variant >= 2;
+		cfg.staticRejection.enabled = variant == 3;
+		cfg.staticRejection.warmupFrames = 1;
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(test::randomModel(7, 512), cfg, det).ok());
 		std::vector<std::vector<uint8_t>> frames;
@@ -150,10 +153,11 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 			frames.push_back(test::randomImage(s, 320, 240));
 		int detections = 0;
 		EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0);
-		std::printf("calibrated, resize 2%s%s: %d detections, %llu windows in the last frame, 0 "
-			    "allocations\n",
+		std::printf("calibrated, resize 2%s%s%s: %d detections, %llu windows in the last frame, "
+			    "0 allocations\n",
 			    cfg.resizeInPyramid ? " in the pyramid" : "",
-			    cfg.calibratedPyramid ? ", placed levels" : "", detections,
+			    cfg.calibratedPyramid ? ", placed levels" : "",
+			    cfg.staticRejection.enabled ? ", static gate" : "", detections,
 			    (unsigned long long)det->lastStats().windows);
 		EXPECT_GT(det->lastStats().windows, 0u);
 		// Placed levels build only the first pass's rows and new regions extend them

@@ -157,6 +157,65 @@ TEST(CalibratedDetector, RejectsMissingCameraAndOtherFrameSizes)
 	EXPECT_NE(std::string(st.message()).find("640x480"), std::string::npos) << st.message();
 }
 
+TEST(CalibratedDetector, StaticGateSkipsSparseWindowsWhereNothingMoves)
+{
+	// A camera 3 m up looking down at the ground; a textured frame seen three times is
+	// the background (warm-up 2), then a bright block appears in the middle.
+	Eigen::Matrix3d K;
+	K << 500, 0, 320, 0, 500, 240, 0, 0, 1;
+	Eigen::Matrix3d level;
+	level << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	const double pitch = -20 * 3.14159265358979 / 180; // towards the ground
+	Eigen::Matrix3d tilt;
+	tilt << 1, 0, 0, 0, std::cos(pitch), std::sin(pitch), 0, -std::sin(pitch), std::cos(pitch);
+	const Eigen::Matrix3d R = tilt * level;
+	const Eigen::Vector3d t = -R * Eigen::Vector3d(0, 0, 3.0);
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, t, LengthUnit::Metre, camera).ok());
+	const Model model = test::randomModel(5);
+	const auto ground = test::randomImage(3, 640, 480);
+	auto withBlock = ground;
+	for (int y = 200; y < 320; y++)
+		for (int x = 300; x < 340; x++)
+			for (int c = 0; c < 3; c++)
+				withBlock[(size_t(y) * 640 + x) * 3 + c] = 255;
+	uint64_t sparse[2][2] = {}, skipped[2][2] = {};
+	for (int gate = 0; gate < 2; gate++) {
+		DetectorConfig cfg;
+		cfg.maxWidth = 640;
+		cfg.maxHeight = 480;
+		cfg.camera = &camera;
+		cfg.method = DetectionMethod::Calibrated;
+		cfg.calibratedPyramid = true;
+		cfg.staticRejection.enabled = true;
+		cfg.staticRejection.warmupFrames = 2;
+		cfg.staticRejection.gateSparse = gate == 1;
+		std::unique_ptr<Detector> det;
+		ASSERT_TRUE(Detector::create(model, cfg, det).ok());
+		Detections d;
+		for (int f = 0; f < 2; f++) { // warm-up: every sparse window
+			ASSERT_TRUE(det->detect(ImageView::rgb8(ground.data(), 640, 480), d).ok());
+			EXPECT_EQ(det->lastStats().staticSkipped, 0u);
+		}
+		ASSERT_TRUE(det->detect(ImageView::rgb8(ground.data(), 640, 480), d).ok());
+		sparse[gate][0] = det->lastStats().sparseWindows;
+		skipped[gate][0] = det->lastStats().staticSkipped;
+		ASSERT_TRUE(det->detect(ImageView::rgb8(withBlock.data(), 640, 480), d).ok());
+		sparse[gate][1] = det->lastStats().sparseWindows;
+		skipped[gate][1] = det->lastStats().staticSkipped;
+	}
+	// Without the gate nothing is skipped; with it, nothing is evaluated on the unchanged
+	// frame, and on the frame with the block only the windows whose box holds enough of it.
+	const uint64_t all = sparse[0][0];
+	ASSERT_GT(all, 50u);
+	EXPECT_EQ(skipped[0][0] + skipped[0][1], 0u);
+	EXPECT_EQ(sparse[1][0], 0u);
+	EXPECT_EQ(skipped[1][0], all);
+	EXPECT_GT(sparse[1][1], 0u);
+	EXPECT_LT(sparse[1][1] * 4, all);
+	EXPECT_EQ(sparse[1][1] + skipped[1][1], all);
+}
+
 // The INRIA model and PETS view 1's calibration; false (the caller skips) when ../shared,
 // the converter or the PETS frames are missing.
 bool loadPets(Model &model, CameraModel &camera)

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "channels/frame_input.h"
@@ -141,6 +142,60 @@ TEST(StaticSceneCells, GreyIsTheCellMeanOfRPlusTwoGPlusBOverFour)
 				}
 			ASSERT_EQ(scene.cellGrey(cx, cy), sum / 64) << cx << "," << cy;
 		}
+}
+
+TEST(StaticSceneCells, ForegroundCountsAreThoseOfTheCells)
+{
+	// Two random frames: the first is the background; the cells of the second that differ
+	// from it, counted over random rectangles by the summed-area table, against a count
+	// cell by cell.
+	const int w = 93, h = 61, cw = w / 4, ch = h / 4;
+	uint32_t seed = 777;
+	auto randomFrame = [&]() {
+		std::vector<uint8_t> rgb(size_t(w) * h * 3);
+		for (auto &v : rgb) {
+			seed = seed * 1664525u + 1013904223u;
+			v = uint8_t(seed >> 24);
+		}
+		return rgb;
+	};
+	FrameInput input;
+	ASSERT_TRUE(input.init(w, h, false).ok());
+	StaticScene scene;
+	StaticRejection settings;
+	settings.enabled = true;
+	settings.difference = 20;
+	ASSERT_TRUE(scene.init(w, h, settings).ok());
+	const std::vector<uint8_t> first = randomFrame(), second = randomFrame();
+	input.begin(ImageView::rgb8(first.data(), w, h));
+	scene.observe(input);
+	std::vector<int> background(size_t(cw) * ch);
+	for (int cy = 0; cy < ch; cy++)
+		for (int cx = 0; cx < cw; cx++)
+			background[size_t(cy) * cw + cx] = scene.cellGrey(cx, cy);
+	scene.update(); // the background is the first frame: nothing to move towards
+	input.begin(ImageView::rgb8(second.data(), w, h));
+	scene.observe(input);
+	int anyDiffering = 0;
+	for (int k = 0; k < 500; k++) {
+		seed = seed * 1664525u + 1013904223u;
+		StaticScene::CellRect r;
+		r.x0 = int(seed >> 8) % cw;
+		r.x1 = r.x0 + int(seed >> 20) % (cw - r.x0);
+		seed = seed * 1664525u + 1013904223u;
+		r.y0 = int(seed >> 8) % ch;
+		r.y1 = r.y0 + int(seed >> 20) % (ch - r.y0);
+		int expected = 0;
+		for (int cy = r.y0; cy <= r.y1; cy++)
+			for (int cx = r.x0; cx <= r.x1; cx++)
+				expected += std::abs(scene.cellGrey(cx, cy) - background[size_t(cy) * cw + cx]) >
+					    settings.difference;
+		ASSERT_EQ(scene.foregroundCells(r), expected)
+			<< r.x0 << ".." << r.x1 << " x " << r.y0 << ".." << r.y1;
+		EXPECT_EQ(scene.moving(r), float(expected) / float(r.count()) >= settings.minForeground);
+		anyDiffering += expected > 0 && expected < r.count();
+	}
+	EXPECT_GT(anyDiffering, 100); // rectangles with some cells differing and some not
 }
 
 TEST(StaticSceneSettings, BadSettingsAreNamed)

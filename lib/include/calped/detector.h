@@ -26,12 +26,17 @@ enum class DetectionMethod { Generic, Calibrated };
 // it sees) and drops a detection whose box has fewer than minForeground of its cells
 // differing from it by more than `difference` grey levels. A person who stands still
 // long enough fades into that background too (at one grey level per frame); the
-// background starts again when the frame size changes. docs/calibrated.md.
+// background starts again when the frame size changes. In the calibrated mode with
+// sparse and dense windows, `gateSparse` also skips, once the background is ready, the
+// sparse windows whose own box has fewer than minForeground of its cells differing:
+// what they could find there would be dropped anyway, and the pyramid is then only
+// needed where something moves. docs/calibrated.md.
 struct StaticRejection {
 	bool enabled = false;
 	int difference = 10;        // grey levels, 1..254
 	float minForeground = 0.1f; // fraction of the box's cells, 0..1
 	int warmupFrames = 50;      // first frames of a background, none dropped (>= 1)
+	bool gateSparse = true;     // calibrated mode: no sparse windows on static scene
 };
 
 struct DetectorConfig {
@@ -114,8 +119,10 @@ struct FrameStats {
 	uint64_t sparseWindows = 0, denseWindows = 0;
 	int denseRegions = 0;
 	uint64_t droppedRegions = 0;
-	// Detections dropped as static scene structure (DetectorConfig::staticRejection).
+	// Detections dropped as static scene structure, and sparse windows not evaluated
+	// because their box is static scene (DetectorConfig::staticRejection).
 	int staticRejected = 0;
+	uint64_t staticSkipped = 0;
 	// Wall time per stage: input resize, channels of computed levels, approximated levels
 	// (with smoothing and padding), classification, calibrated candidate generation and
 	// dense-region upkeep, suppression, and the whole frame.

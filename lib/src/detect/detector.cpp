@@ -144,8 +144,34 @@ Status DetectorImpl::initCalibrated()
 	planLevels_ = scales.count;
 	rowsPerFrameAllowed_ = config.sparseDense && pyramid.rowsExtensible(maxWidth_, maxHeight_);
 	rowsPerFrame_ = rowsPerFrameAllowed_;
-	for (int i = 0; i < scales.count; i++)
+	for (int i = 0; i < scales.count; i++) {
 		sparseRows_[i] = plan_.rowsRead(i, plan_.sparseWindows(i), plan_.sparseCount(i));
+		sparseList_[i] = plan_.sparseWindows(i);
+		sparseListCount_[i] = plan_.sparseCount(i);
+		sparseListRows_[i] = sparseRows_[i];
+	}
+	gateSparse_ = config.sparseDense && config.staticRejection.enabled &&
+		      config.staticRejection.gateSparse;
+	if (gateSparse_) {
+		size_t total = 0;
+		for (int i = 0; i < scales.count; i++)
+			total += plan_.sparseCount(i);
+		try {
+			sparseCells_.resize(total);
+			movingSparse_.resize(total);
+		} catch (const std::bad_alloc &) {
+			return Status::error(ErrorCode::OutOfMemory, "static-scene gate of the sparse grid");
+		}
+		// The static scene's cells are 4x4 pixels of the (maximum-size) input frame.
+		size_t k = 0;
+		for (int i = 0; i < scales.count; i++)
+			for (size_t j = 0; j < plan_.sparseCount(i); j++) {
+				const uint32_t w = plan_.sparseWindows(i)[j];
+				sparseCells_[k++] = StaticScene::cellsOf(
+					boxOfWindow(scales.levels[i], int(w >> 16), int(w & 0xFFFF)),
+					maxWidth_ / 4, maxHeight_ / 4);
+			}
+	}
 	if (config.denseRegionPersistence < 1 || config.maxDenseRegions < 1)
 		return Status::error(ErrorCode::InvalidArgument,
 				     "dense region persistence %d and capacity %d must be >= 1",
@@ -196,11 +222,34 @@ size_t DetectorImpl::collectDense(int i, const DenseRegion &region, size_t n)
 	return n;
 }
 
+void DetectorImpl::selectSparse()
+{
+	if (!gateSparse_)
+		return; // the plan's lists, set at init
+	// Until the background is trusted, every sparse window.
+	const bool gate = static_.ready();
+	size_t k = 0, kept = 0;
+	for (int i = 0; i < planLevels_; i++) {
+		const uint32_t *all = plan_.sparseWindows(i);
+		const size_t n = plan_.sparseCount(i);
+		uint32_t *list = movingSparse_.data() + kept;
+		size_t count = 0;
+		for (size_t j = 0; j < n; j++, k++)
+			if (!gate || static_.moving(sparseCells_[k]))
+				list[count++] = all[j];
+		stats.staticSkipped += n - count;
+		sparseList_[i] = list;
+		sparseListCount_[i] = count;
+		sparseListRows_[i] = count == n ? sparseRows_[i] : plan_.rowsRead(i, list, count);
+		kept += count;
+	}
+}
+
 void DetectorImpl::planFrameRows(int firstRegion, bool sparse)
 {
 	// The plan's levels: those of maximum-size frames, the only size this mode takes.
 	for (int i = 0; i < planLevels_; i++) {
-		RowBand rows = sparse ? sparseRows_[i] : RowBand();
+		RowBand rows = sparse ? sparseListRows_[i] : RowBand();
 		for (int r = firstRegion; r < regions_.count(); r++) {
 			const DenseRegion &g = regions_[r];
 			int r0, r1, c0, c1;
@@ -237,8 +286,8 @@ Status DetectorImpl::classifySparseDense(double &ms)
 		const auto tList = Clock::now();
 		uint8_t *done = evaluated_.data() + plan_.gridFirst(i);
 		size_t n = 0;
-		const uint32_t *sparse = plan_.sparseWindows(i);
-		for (size_t k = 0; k < plan_.sparseCount(i); k++) {
+		const uint32_t *sparse = sparseList_[i];
+		for (size_t k = 0; k < sparseListCount_[i]; k++) {
 			done[size_t(sparse[k] >> 16) * plan_.cols(i) + (sparse[k] & 0xFFFF)] = 1;
 			frameList_[n++] = sparse[k];
 		}
@@ -326,20 +375,27 @@ Status DetectorImpl::checkImage(const ImageView &image) const
 	return Status::success();
 }
 
-void DetectorImpl::addBoxes(int levelIndex, const kernels::WindowHit *hits, int count)
+Detection DetectorImpl::boxOfWindow(const PyramidLevel &l, int row, int col) const
 {
-	const PyramidLevel &l = pyramid.scales().levels[levelIndex];
 	const ModelParams &p = params_;
 	// The box is the model's central window, shifted back by the padding.
 	const double shiftH = (p.modelDsPadH - double(p.modelDsH)) / 2 - p.padH;
 	const double shiftW = (p.modelDsPadW - double(p.modelDsW)) / 2 - p.padW;
 	const double r = frameResize_;
+	Detection d;
+	d.x = float((col * p.stride + shiftW) / l.scaleW / r);
+	d.y = float((row * p.stride + shiftH) / l.scaleH / r);
+	d.w = float(p.modelDsW / l.scale / r);
+	d.h = float(p.modelDsH / l.scale / r);
+	return d;
+}
+
+void DetectorImpl::addBoxes(int levelIndex, const kernels::WindowHit *hits, int count)
+{
+	const PyramidLevel &l = pyramid.scales().levels[levelIndex];
 	for (int i = 0; i < count; i++) {
 		Detection &d = candidates_[candidateCount_++];
-		d.x = float((hits[i].col * p.stride + shiftW) / l.scaleW / r);
-		d.y = float((hits[i].row * p.stride + shiftH) / l.scaleH / r);
-		d.w = float(p.modelDsW / l.scale / r);
-		d.h = float(p.modelDsH / l.scale / r);
+		d = boxOfWindow(l, hits[i].row, hits[i].col);
 		d.score = float(hits[i].score / double(1 << kScoreFracBits));
 	}
 }
@@ -383,6 +439,8 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	const bool calibrated = config.method == DetectionMethod::Calibrated;
 	const bool sparseDense = calibrated && config.sparseDense;
 	const RowBand *rows = nullptr;
+	if (sparseDense)
+		selectSparse();
 	if (sparseDense && rowsPerFrame_) {
 		planFrameRows(0, true);
 		rows = frameRows_;

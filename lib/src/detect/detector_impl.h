@@ -35,6 +35,8 @@ public:
 
 private:
 	Status checkImage(const ImageView &image) const;
+	// The box of window (row, col) of level l, in input-image pixels (no score).
+	Detection boxOfWindow(const PyramidLevel &l, int row, int col) const;
 	// Window hits of one level to boxes in input-image pixels, appended to candidates_.
 	void addBoxes(int level, const kernels::WindowHit *hits, int count);
 	Status initCalibrated();
@@ -44,6 +46,9 @@ private:
 	// Thesis 3.2: sparse grid and existing dense regions, new regions, their windows;
 	// adds the classification time to ms.
 	Status classifySparseDense(double &ms);
+	// This frame's sparse windows (sparseList_): the plan's, or with the static-scene
+	// gate only those whose box moves.
+	void selectSparse();
 	// The rows of each level (frameRows_) that the windows of regions firstRegion..
 	// read, and with `sparse` the sparse grid's too (the first pass's).
 	void planFrameRows(int firstRegion, bool sparse);
@@ -68,6 +73,15 @@ private:
 	int planLevels_ = 0;
 	RowBand sparseRows_[kMaxLevels]; // the rows the sparse grid reads
 	RowBand frameRows_[kMaxLevels];
+	// Static-scene gate of the sparse grid (StaticRejection::gateSparse): each sparse
+	// window's box as cells of the static scene (plan order, level after level), and
+	// this frame's sparse windows of each level and the rows they read.
+	bool gateSparse_ = false;
+	std::vector<StaticScene::CellRect> sparseCells_;
+	std::vector<uint32_t> movingSparse_;
+	const uint32_t *sparseList_[kMaxLevels] = {};
+	size_t sparseListCount_[kMaxLevels] = {};
+	RowBand sparseListRows_[kMaxLevels];
 	DenseRegions regions_;
 	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
 	std::vector<uint32_t> frameList_;

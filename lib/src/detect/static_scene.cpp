@@ -28,6 +28,7 @@ Status StaticScene::init(int maxWidth, int maxHeight, const StaticRejection &set
 		current_.assign(cells, 0);
 		background_.assign(cells, 0);
 		columnSums_.assign(size_t(maxWidth) * 3 + 12, 0);
+		table_.assign(size_t(maxWidth / 4 + 2) * size_t(maxHeight / 4 + 2), 0);
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory, "static rejection buffers");
 	}
@@ -66,27 +67,40 @@ void StaticScene::observe(FrameInput &input)
 	}
 	if (frames_ == 0)
 		std::copy(current_.begin(), current_.begin() + size_t(w) * h, background_.begin());
+	// The summed-area table of the cells that differ.
+	uint32_t *t = table_.data();
+	const size_t tw = size_t(w) + 1;
+	std::fill(t, t + tw, 0u);
+	for (int cy = 0; cy < h; cy++) {
+		const uint8_t *cur = current_.data() + size_t(cy) * w;
+		const uint8_t *bg = background_.data() + size_t(cy) * w;
+		const uint32_t *above = t + size_t(cy) * tw;
+		uint32_t *row = t + size_t(cy + 1) * tw;
+		uint32_t inRow = 0;
+		row[0] = 0;
+		for (int cx = 0; cx < w; cx++) {
+			inRow += std::abs(int(cur[cx]) - int(bg[cx])) > settings_.difference;
+			row[cx + 1] = above[cx + 1] + inRow;
+		}
+	}
+}
+
+StaticScene::CellRect StaticScene::cellsOf(const Detection &box, int cellsW, int cellsH)
+{
+	CellRect c;
+	c.x0 = std::clamp(int(std::floor(box.x / 4)), 0, cellsW - 1);
+	c.x1 = std::clamp(int(std::floor((box.x + box.w) / 4)), 0, cellsW - 1);
+	c.y0 = std::clamp(int(std::floor(box.y / 4)), 0, cellsH - 1);
+	c.y1 = std::clamp(int(std::floor((box.y + box.h) / 4)), 0, cellsH - 1);
+	return c;
 }
 
 float StaticScene::foreground(const Detection &box) const
 {
 	if (cellsW_ == 0 || cellsH_ == 0)
 		return 1.0f;
-	// The cells the box touches, clipped to the frame.
-	const int x0 = std::clamp(int(std::floor(box.x / 4)), 0, cellsW_ - 1);
-	const int x1 = std::clamp(int(std::floor((box.x + box.w) / 4)), 0, cellsW_ - 1);
-	const int y0 = std::clamp(int(std::floor(box.y / 4)), 0, cellsH_ - 1);
-	const int y1 = std::clamp(int(std::floor((box.y + box.h) / 4)), 0, cellsH_ - 1);
-	int differing = 0, total = 0;
-	for (int cy = y0; cy <= y1; cy++) {
-		const size_t row = size_t(cy) * cellsW_;
-		for (int cx = x0; cx <= x1; cx++) {
-			total++;
-			differing += std::abs(int(current_[row + cx]) - int(background_[row + cx])) >
-				     settings_.difference;
-		}
-	}
-	return float(differing) / float(total);
+	const CellRect cells = cellsOf(box, cellsW_, cellsH_);
+	return float(foregroundCells(cells)) / float(cells.count());
 }
 
 int StaticScene::reject(Detection *detections, int count)
@@ -95,7 +109,7 @@ int StaticScene::reject(Detection *detections, int count)
 		return count;
 	int kept = 0;
 	for (int i = 0; i < count; i++)
-		if (foreground(detections[i]) >= settings_.minForeground)
+		if (cellsW_ == 0 || moving(cellsOf(detections[i], cellsW_, cellsH_)))
 			detections[kept++] = detections[i];
 	return kept;
 }

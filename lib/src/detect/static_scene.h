@@ -19,10 +19,19 @@ namespace calped {
 class StaticScene
 {
 public:
+	// Cells [x0, x1] x [y0, y1] of the frame's grid, inclusive.
+	struct CellRect {
+		int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+		int count() const { return (x1 - x0 + 1) * (y1 - y0 + 1); }
+	};
+	// The cells a box (input pixels) touches in a grid of cellsW x cellsH cells, clipped.
+	static CellRect cellsOf(const Detection &box, int cellsW, int cellsH);
+
 	// Buffers for frames up to maxWidth x maxHeight; checks the settings.
 	Status init(int maxWidth, int maxHeight, const StaticRejection &settings);
 
-	// The grey cells of this frame (read from `input` a strip at a time). A frame of
+	// The grey cells of this frame (read from `input` a strip at a time), and which of
+	// them differ from the background (counted in a summed-area table). A frame of
 	// another size than the last one starts the background again.
 	void observe(FrameInput &input);
 
@@ -43,11 +52,29 @@ public:
 	uint8_t cellGrey(int cx, int cy) const { return current_[size_t(cy) * cellsW_ + cx]; }
 	// Fraction of the box's cells that differ from the background (tests, tools).
 	float foreground(const Detection &box) const;
+	// Whether at least minForeground of these cells differ from the background (the
+	// test reject() applies to a detection's box).
+	bool moving(const CellRect &cells) const
+	{
+		return float(foregroundCells(cells)) / float(cells.count()) >= settings_.minForeground;
+	}
+	// Cells of `cells` that differ from the background, from the summed-area table.
+	int foregroundCells(const CellRect &cells) const
+	{
+		const size_t w = size_t(cellsW_) + 1;
+		const uint32_t *t = table_.data();
+		return int(t[size_t(cells.y1 + 1) * w + size_t(cells.x1 + 1)] -
+			   t[size_t(cells.y0) * w + size_t(cells.x1 + 1)] -
+			   t[size_t(cells.y1 + 1) * w + size_t(cells.x0)] + t[size_t(cells.y0) * w + size_t(cells.x0)]);
+	}
 
 private:
 	StaticRejection settings_;
 	std::vector<uint8_t> current_, background_;
 	std::vector<uint16_t> columnSums_; // one strip of four rows, added byte by byte
+	// Summed-area table of the differing cells: (cellsW_ + 1) x (cellsH_ + 1), a zero
+	// row and column first.
+	std::vector<uint32_t> table_;
 	int cellsW_ = 0, cellsH_ = 0;
 	long frames_ = 0; // frames the background has seen
 };
