@@ -194,6 +194,127 @@ TEST(PyramidBands, ExtendedRowsEqualTheFullPyramid)
 	}
 }
 
+// Placed levels built with nothing computed, then made preparable in rectangles
+// (Pyramid::ensureRects, twice, as the detector's two passes do): every rectangle equals
+// the full pyramid's level there, padding included where it touches a side.
+void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
+		       PixelFormat format)
+{
+	ModelParams p;
+	Pyramid full, part;
+	ASSERT_TRUE(full.init(p, width, height).ok());
+	ASSERT_TRUE(part.init(p, width, height).ok());
+	const test::FormattedImage image = test::encodeImage(rgb.data(), width, height, format);
+	FrameInput input;
+	ASSERT_TRUE(input.init(width, height, false).ok());
+	ScaleList scales;
+	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
+	RowBand all[kMaxLevels], none[kMaxLevels];
+	for (int i = 0; i < scales.count; i++)
+		all[i] = RowBand{ 0, scales.levels[i].height };
+	int source[kMaxLevels];
+	ASSERT_TRUE(chooseComputedLevels(p, scales, all, full.channelMargin(), 5, width, height, source));
+	ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
+	ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
+	input.begin(image.view());
+	ASSERT_TRUE(full.build(input).ok());
+	input.begin(image.view());
+	ASSERT_TRUE(part.build(input, none).ok());
+	EXPECT_EQ(part.computedCount, 0);
+	std::mt19937 rng(seed);
+	for (int pass = 0; pass < 2; pass++) {
+		// A few small rectangles on random levels, most inside (so their edges are not
+		// the level's), some touching sides or beyond them (clipped).
+		std::vector<int> levels;
+		std::vector<LevelRect> rects;
+		for (int k = 0; k < 5; k++) {
+			const int i = int(rng() % scales.count);
+			const int h = scales.levels[i].height, w = scales.levels[i].width;
+			int r0 = int(rng() % h), r1 = r0 + 1 + int(rng() % 6);
+			int c0 = int(rng() % w), c1 = c0 + 1 + int(rng() % 6);
+			if (k == 1 && pass == 1)
+				c0 = 0;
+			if (k == 2 && pass == 1)
+				c1 = w + 2, r0 = 0;
+			levels.push_back(i);
+			rects.push_back(LevelRect{ RowBand{ r0, r1 }, RowBand{ c0, c1 } });
+		}
+		const long before = part.rectsComputed;
+		ASSERT_TRUE(part.ensureRects(input, levels.data(), rects.data(), int(rects.size())).ok());
+		if (pass == 0) {
+			EXPECT_GT(part.rectsComputed, before);
+		}
+		for (size_t k = 0; k < rects.size(); k++) {
+			const int i = levels[k];
+			const int h = scales.levels[i].height, w = scales.levels[i].width;
+			const RowBand rows = rects[k].rows.clipped(h), cols = rects[k].cols.clipped(w);
+			const LevelChannels a = full.level(i);
+			std::vector<uint16_t> expected(a.data, a.data + kChannelCount * a.planeStride);
+			const LevelChannels b = part.level(i, &rows, &cols);
+			const int padW = full.padCellsW(), padH = full.padCellsH();
+			const int y0 = rows.begin == 0 ? 0 : rows.begin + padH;
+			const int y1 = rows.end == h ? b.paddedHeight : rows.end + padH;
+			const int x0 = cols.begin == 0 ? 0 : cols.begin + padW;
+			const int x1 = cols.end == w ? b.paddedWidth : cols.end + padW;
+			int mismatches = 0;
+			for (int c = 0; c < kChannelCount; c++)
+				for (int y = y0; y < y1; y++)
+					for (int x = x0; x < x1; x++) {
+						const size_t q = size_t(c) * a.planeStride + size_t(y) * a.rowStride + x;
+						if (expected[q] != b.data[q] && mismatches++ < 3)
+							ADD_FAILURE() << "pass " << pass << " level " << i << " channel " << c
+								      << " padded (" << y << ", " << x << ") rows "
+								      << rows.begin << ".." << rows.end << " cols "
+								      << cols.begin << ".." << cols.end;
+					}
+			ASSERT_EQ(mismatches, 0);
+		}
+	}
+	EXPECT_GT(part.computedCount, 0);
+	// Rows cannot be extended in the same frame.
+	RowBand some[kMaxLevels];
+	some[0] = RowBand{ 0, 1 };
+	EXPECT_EQ(part.ensureRows(input, some).code(), ErrorCode::InvalidArgument);
+}
+
+TEST(PyramidBands, RectanglesEqualTheFullPyramid)
+{
+	// Odd sizes; RGB8 and a format converted a strip of rows at a time.
+	const int width = 2 * 160 + 1, height = 2 * 124 - 1;
+	for (uint32_t seed = 1; seed <= 12; seed++) {
+		SCOPED_TRACE(seed);
+		const std::vector<uint8_t> rgb = test::randomImage(70 + seed, width, height);
+		compareRectangles(rgb, width, height, seed * 41, seed % 2 ? PixelFormat::RGB8 : PixelFormat::NV12);
+	}
+}
+
+TEST(PyramidBands, RectanglesMergeNearNeighbours)
+{
+	// addMerged keeps rectangles apart by at least the gap, covering all that was added.
+	std::mt19937 rng(9);
+	for (int trial = 0; trial < 200; trial++) {
+		LevelRect set[6];
+		int count = 0;
+		std::vector<LevelRect> added;
+		for (int k = 0; k < 20; k++) {
+			const int r0 = int(rng() % 100), c0 = int(rng() % 100);
+			const LevelRect r{ RowBand{ r0, r0 + 1 + int(rng() % 10) }, RowBand{ c0, c0 + 1 + int(rng() % 10) } };
+			addMerged(set, count, 6, r, 2);
+			added.push_back(r);
+			ASSERT_LE(count, 6);
+			for (const LevelRect &a : added) {
+				bool covered = false;
+				for (int q = 0; q < count; q++)
+					covered |= set[q].contains(a);
+				ASSERT_TRUE(covered);
+			}
+			for (int q = 0; q < count; q++)
+				for (int o = q + 1; o < count; o++)
+					ASSERT_FALSE(set[q].near(set[o], 2));
+		}
+	}
+}
+
 TEST(PyramidBands, RowsOfTheToolboxOctavesAreNotExtended)
 {
 	// The toolbox's octaves resample the smaller ones from the half-size image, which

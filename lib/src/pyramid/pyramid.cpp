@@ -365,6 +365,9 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 	width_ = width;
 	height_ = height;
 	planRows(levelRows, width, height);
+	rectFrame_ = false;
+	for (int i = 0; i < scales_.count; i++)
+		doneCount_[i] = doneNext_[i] = 0;
 
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
@@ -440,6 +443,9 @@ bool Pyramid::rowsExtensible(int width, int height) const
 
 Status Pyramid::ensureRows(FrameInput &input, int i, const RowBand &wanted)
 {
+	if (rectFrame_)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "rows cannot be extended in a frame that computed rectangles");
 	const PyramidLevel &l = scales_.levels[i];
 	const RowBand raw = wanted.clipped(l.height).grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
 	if (rows_[i].raw.contains(raw))
@@ -454,6 +460,9 @@ Status Pyramid::ensureRows(FrameInput &input, const RowBand *wanted)
 	if (halfLevel_ >= 0)
 		return Status::error(ErrorCode::InvalidArgument,
 				     "rows cannot be extended: a half-size image is in use");
+	if (rectFrame_)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "rows cannot be extended in a frame that computed rectangles");
 	// What each computed level must hold: its own rows and its approximated levels'
 	// source rows.
 	RowBand need[kMaxLevels];
@@ -488,6 +497,34 @@ Status Pyramid::ensureRows(FrameInput &input, const RowBand *wanted)
 	return Status::success();
 }
 
+Status Pyramid::levelColour(FrameInput &input, int i, const RowBand &chan, const RowBand *chanCols,
+			   Plane<uint16_t> in[3])
+{
+	const PyramidLevel &l = scales_.levels[i];
+	const int w1 = l.width * 4, h1 = l.height * 4;
+	Plane<uint16_t> luv[3];
+	for (int c = 0; c < 3; c++)
+		luv[c] = luv_[c].view(width_, height_);
+	if (w1 == width_ && h1 == height_) {
+		convertLuvRows(input, chan);
+		for (int c = 0; c < 3; c++)
+			in[c] = luv[c];
+		return Status::success();
+	}
+	const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
+	const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY) : nullptr;
+	if (!yTaps)
+		return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+	// The level's colour image is shared by the computed levels: resample these rows
+	// again from the whole image.
+	convertLuvRows(input, sourceRows(yTaps, chan));
+	for (int c = 0; c < 3; c++)
+		in[c] = levelLuv_[c].view(w1, h1);
+	const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
+	resampleRows(luv, in, 3, yTapsOf, chan, xTaps, chanCols);
+	return Status::success();
+}
+
 Status Pyramid::extendComputed(FrameInput &input, int i, const RowBand &need)
 {
 	const PyramidLevel &l = scales_.levels[i];
@@ -498,16 +535,6 @@ Status Pyramid::extendComputed(FrameInput &input, int i, const RowBand &need)
 	const RowBand parts[2] = { r.raw.empty() ? hull : RowBand{ hull.begin, r.raw.begin },
 				   r.raw.empty() ? RowBand() : RowBand{ r.raw.end, hull.end } };
 	const int w1 = l.width * 4, h1 = l.height * 4;
-	const bool native = w1 == width_ && h1 == height_;
-	const kernels::ResampleTap *xTaps = native ? nullptr : levelTaps(i, kTapsX);
-	const kernels::ResampleTap *yTaps = native || !xTaps ? nullptr : levelTaps(i, kTapsY);
-	if (!native && !yTaps)
-		return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-	Plane<uint16_t> luv[3], in[3];
-	for (int c = 0; c < 3; c++) {
-		luv[c] = luv_[c].view(width_, height_);
-		in[c] = native ? luv[c] : levelLuv_[c].view(w1, h1);
-	}
 	Plane<uint16_t> out[kChannelCount];
 	realLevelPlanes(i, out);
 	for (const RowBand &part : parts) {
@@ -516,15 +543,10 @@ Status Pyramid::extendComputed(FrameInput &input, int i, const RowBand &need)
 		// Its colour rows with the channels' margin, as build() plans them.
 		const RowBand chan = RowBand{ 4 * part.begin - channelMargin_, 4 * part.end + channelMargin_ }
 					     .clipped(h1);
-		if (native) {
-			convertLuvRows(input, chan);
-		} else {
-			// The level's colour image is shared by the computed levels: resample
-			// these rows again from the whole image.
-			convertLuvRows(input, sourceRows(yTaps, chan));
-			const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
-			resampleRows(luv, in, 3, yTapsOf, chan, xTaps);
-		}
+		Plane<uint16_t> in[3];
+		const Status st = levelColour(input, i, chan, nullptr, in);
+		if (!st.ok())
+			return st;
 		// The band's edge rows are not exact: compute into the approximation buffer
 		// (free between levels) and keep only the part's rows.
 		Plane<uint16_t> scratch[kChannelCount];
@@ -542,6 +564,100 @@ Status Pyramid::extendComputed(FrameInput &input, int i, const RowBand &need)
 		computedCount++;
 	rowExtensions++;
 	r.raw = hull;
+	return Status::success();
+}
+
+Status Pyramid::ensureRects(FrameInput &input, const int *levels, const LevelRect *rects, int count)
+{
+	if (halfLevel_ >= 0)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "rectangles cannot be computed: a half-size image is in use");
+	const int reach = params_.pyramidSmooth > 0 ? 1 : 0;
+	// What each computed level must hold: the raw rectangles of its own level and the
+	// source rectangles of the levels approximated from it, merged. Merged rectangles
+	// stay at least a cell margin apart, so their channels' margins do not overlap much.
+	const int gap = 2 * channelMargin_ / 4;
+	for (int i = 0; i < scales_.count; i++)
+		needCount_[i] = 0;
+	for (int k = 0; k < count; k++) {
+		const int i = levels[k];
+		const PyramidLevel &l = scales_.levels[i];
+		LevelRect raw{ rects[k].rows.clipped(l.height).grown(reach, l.height),
+			       rects[k].cols.clipped(l.width).grown(reach, l.width) };
+		if (raw.empty())
+			continue;
+		// level() checks its rows against these.
+		rows_[i].wanted.add(rects[k].rows.clipped(l.height));
+		rows_[i].raw.add(raw.rows);
+		if (!l.computed) {
+			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
+			if (!xTaps)
+				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+			const RowBand cols = sourceRows(xTaps, raw.cols);
+			const kernels::ResampleTap *yTaps = levelTaps(i, kTapsY);
+			if (!yTaps)
+				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+			raw = LevelRect{ sourceRows(yTaps, raw.rows), cols };
+		}
+		const int c = l.source;
+		addMerged(needRects_[c], needCount_[c], kMaxRects, raw, gap);
+	}
+	rectFrame_ = true;
+	const auto t0 = Clock::now();
+	for (int i = 0; i < scales_.count; i++)
+		for (int k = 0; k < needCount_[i]; k++) {
+			const LevelRect &r = needRects_[i][k];
+			bool done = false;
+			for (int d = 0; d < doneCount_[i] && !done; d++)
+				done = doneRects_[i][d].contains(r);
+			if (done)
+				continue;
+			const Status st = computeRect(input, i, r);
+			if (!st.ok())
+				return st;
+		}
+	msChannels += msSince(t0);
+	return Status::success();
+}
+
+Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r)
+{
+	const PyramidLevel &l = scales_.levels[i];
+	const int w1 = l.width * 4, h1 = l.height * 4;
+	// The colour pixels with the channels' margin on every side (whole cells), computed
+	// into the approximation buffer (free between levels); only r is kept.
+	const RowBand chan = RowBand{ 4 * r.rows.begin - channelMargin_, 4 * r.rows.end + channelMargin_ }
+				     .clipped(h1);
+	const RowBand chanCols = RowBand{ 4 * r.cols.begin - channelMargin_, 4 * r.cols.end + channelMargin_ }
+					 .clipped(w1);
+	Plane<uint16_t> in[3];
+	const Status st = levelColour(input, i, chan, &chanCols, in);
+	if (!st.ok())
+		return st;
+	Plane<uint16_t> scratch[kChannelCount];
+	planesAt(approx_.data(), chanCols.size() / 4, chan.size() / 4, scratch);
+	Plane<const uint16_t> block[3];
+	for (int c = 0; c < 3; c++)
+		block[c] = { in[c].row(chan.begin) + chanCols.begin, chanCols.size(), chan.size(), in[c].stride };
+	channels_.compute(block, chanCols.size(), chan.size(), scratch);
+	Plane<uint16_t> out[kChannelCount];
+	realLevelPlanes(i, out);
+	const int dy = chan.begin / 4, dx = chanCols.begin / 4;
+	for (int c = 0; c < kChannelCount; c++)
+		for (int y = r.rows.begin; y < r.rows.end; y++)
+			std::memcpy(out[c].row(y) + r.cols.begin, scratch[c].row(y - dy) + (r.cols.begin - dx),
+				    sizeof(uint16_t) * r.cols.size());
+	// Remember it (the oldest is forgotten when the list is full: computed again if
+	// asked for again).
+	if (doneCount_[i] == 0 && rows_[i].chan.empty())
+		computedCount++;
+	if (doneCount_[i] < kMaxRects) {
+		doneRects_[i][doneCount_[i]++] = r;
+	} else {
+		doneRects_[i][doneNext_[i]] = r;
+		doneNext_[i] = (doneNext_[i] + 1) % kMaxRects;
+	}
+	rectsComputed++;
 	return Status::success();
 }
 

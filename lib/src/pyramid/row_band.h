@@ -47,6 +47,66 @@ struct RowBand {
 	}
 };
 
+// A rectangle of a level: its rows and its columns (cells, before padding).
+struct LevelRect {
+	RowBand rows, cols;
+
+	bool empty() const { return rows.empty() || cols.empty(); }
+	bool contains(const LevelRect &o) const
+	{
+		return o.empty() || (rows.contains(o.rows) && cols.contains(o.cols));
+	}
+	// Whether the two overlap or are less than `gap` cells apart.
+	bool near(const LevelRect &o, int gap) const
+	{
+		return rows.begin < o.rows.end + gap && o.rows.begin < rows.end + gap &&
+		       cols.begin < o.cols.end + gap && o.cols.begin < cols.end + gap;
+	}
+	// The smallest rectangle holding both.
+	void add(const LevelRect &o)
+	{
+		if (o.empty())
+			return;
+		if (empty()) {
+			*this = o;
+			return;
+		}
+		rows.add(o.rows);
+		cols.add(o.cols);
+	}
+};
+
+// Adds r to set[0 .. count), rectangles at least `gap` cells apart: every one near r is
+// merged into it (their bounding box), until none is; at `capacity`, the last one is
+// merged in too. The union only grows, so everything added stays covered.
+inline void addMerged(LevelRect *set, int &count, int capacity, LevelRect r, int gap)
+{
+	if (r.empty())
+		return;
+	for (int k = 0; k < count;) {
+		if (set[k].near(r, gap)) {
+			r.add(set[k]);
+			set[k] = set[--count];
+			k = 0; // r grew: look again from the start
+		} else {
+			k++;
+		}
+	}
+	while (count >= capacity) {
+		r.add(set[--count]);
+		for (int k = 0; k < count;) {
+			if (set[k].near(r, gap)) {
+				r.add(set[k]);
+				set[k] = set[--count];
+				k = 0;
+			} else {
+				k++;
+			}
+		}
+	}
+	set[count++] = r;
+}
+
 // The source rows that resampling reads to produce output rows `out`.
 inline RowBand sourceRows(const kernels::ResampleTap *taps, const RowBand &out)
 {
