@@ -3,7 +3,7 @@
 // decoded first, then each is detected `--repeat` times; prints median and mean per
 // stage. Usage:
 //   bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--first F]
-//                [--count N] [--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--format NAME]
+//                [--count N] [--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--reject-static] [--format NAME]
 // --format converts the decoded frames to a camera pixel format first (NV12, YUYV,
 // BayerRGGB8, ...: docs/pixel-formats.md), so the detector's input conversion is timed.
 #include <algorithm>
@@ -43,7 +43,7 @@ double mean(const std::vector<double> &v)
 int usage()
 {
 	std::fprintf(stderr, "usage: bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--first F] [--count N] "
-			     "[--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--format NAME]\n");
+			     "[--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--reject-static] [--format NAME]\n");
 	return 2;
 }
 
@@ -54,9 +54,13 @@ int main(int argc, char **argv)
 	std::string modelPath, framesDir, calibPath, formatName = "RGB8";
 	double resize = 1.0;
 	int first = 1, count = 50, repeat = 1; // first: 1-based, in name order
-	bool calibrated = false, resizeInPyramid = false, calibratedPyramid = false;
+	bool calibrated = false, resizeInPyramid = false, calibratedPyramid = false, rejectStatic = false;
 	for (int i = 1; i < argc; i++) {
 		const std::string a = argv[i];
+		if (a == "--reject-static") {
+			rejectStatic = true;
+			continue;
+		}
 		if (a == "--calibrated" || a == "--resize-in-pyramid" || a == "--calibrated-pyramid") {
 			(a == "--calibrated" ? calibrated : a == "--resize-in-pyramid" ? resizeInPyramid : calibratedPyramid) = true;
 			continue;
@@ -140,6 +144,7 @@ int main(int argc, char **argv)
 	cfg.resize = resize;
 	cfg.resizeInPyramid = resizeInPyramid;
 	cfg.calibratedPyramid = calibratedPyramid;
+	cfg.staticRejection.enabled = rejectStatic; // fixed camera: frames must be consecutive
 	CameraModel camera;
 	if (!calibPath.empty()) {
 		std::vector<uint8_t> text;

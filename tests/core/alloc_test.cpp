@@ -161,9 +161,13 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 			    (unsigned long long)det->lastStats().windows);
 		EXPECT_GT(det->lastStats().windows, 0u);
 		// Placed levels build only the first pass's rows and new regions extend them
-		// (Pyramid::ensureRows): that path ran in these frames.
-		if (cfg.calibratedPyramid) {
+		// (Pyramid::ensureRows), or with the static gate compute rectangles
+		// (Pyramid::ensureRects): that path ran in these frames.
+		if (cfg.calibratedPyramid && !cfg.staticRejection.enabled) {
 			EXPECT_GT(det->impl().pyramid.rowExtensions, 0);
+		}
+		if (cfg.staticRejection.enabled) {
+			EXPECT_GT(det->impl().pyramid.rectsComputed, 0);
 		}
 	}
 }

@@ -398,6 +398,55 @@ TEST(CalibratedDetector, PetsRowsPerFrameGiveTheSameDetections)
 	EXPECT_EQ(fixed->impl().pyramid.rowExtensions, 0);
 }
 
+TEST(CalibratedDetector, PetsStaticGateRectanglesGiveTheSameDetections)
+{
+	// With the static scene's gate, placed levels are computed in rectangles around what
+	// each pass reads (Pyramid::ensureRects): the detections must be those of the plan's
+	// fixed bands with the same gate, exactly.
+	Model model;
+	CameraModel camera;
+	if (!loadPets(model, camera))
+		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
+	ASSERT_FALSE(::testing::Test::HasFailure());
+	DetectorConfig cfg = petsConfig(camera, true);
+	cfg.calibratedPyramid = true;
+	cfg.method = DetectionMethod::Calibrated;
+	cfg.staticRejection.enabled = true;
+	cfg.staticRejection.warmupFrames = 3;
+	std::unique_ptr<Detector> fixed, rects;
+	ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
+	ASSERT_TRUE(Detector::create(model, cfg, rects).ok());
+	fixed->impl().setRowsPerFrame(false);
+	int detections = 0;
+	uint64_t skipped = 0;
+	for (int k = 1; k <= 10; k++) {
+		test::RgbImage img;
+		ASSERT_TRUE(test::loadRgb(test::petsFrame(k), img));
+		const ImageView v = ImageView::rgb8(img.pixels.data(), img.width, img.height);
+		Detections a, b;
+		ASSERT_TRUE(fixed->detect(v, a).ok());
+		ASSERT_TRUE(rects->detect(v, b).ok());
+		ASSERT_EQ(fixed->lastStats().sparseWindows, rects->lastStats().sparseWindows) << "frame " << k;
+		ASSERT_EQ(a.count, b.count) << "frame " << k;
+		for (int i = 0; i < a.count; i++) {
+			EXPECT_EQ(a.items[i].x, b.items[i].x);
+			EXPECT_EQ(a.items[i].y, b.items[i].y);
+			EXPECT_EQ(a.items[i].h, b.items[i].h);
+			EXPECT_EQ(a.items[i].score, b.items[i].score) << "frame " << k << " detection " << i;
+		}
+		detections += a.count;
+		skipped += rects->lastStats().staticSkipped;
+	}
+	const long computed = rects->impl().pyramid.rectsComputed;
+	std::printf("PETS frames 1-10, placed levels, static gate: %d detections either way; %llu "
+		    "sparse windows skipped; %ld rectangles computed\n",
+		    detections, (unsigned long long)skipped, computed);
+	EXPECT_GT(detections, 0);
+	EXPECT_GT(skipped, 0u);
+	EXPECT_GT(computed, 0); // the rectangle path ran
+	EXPECT_EQ(fixed->impl().pyramid.rectsComputed, 0);
+}
+
 TEST(CalibratedDetector, PetsPlacedPyramidComputesLessFindsTheSamePeople)
 {
 	Model model;

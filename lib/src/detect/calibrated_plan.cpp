@@ -169,6 +169,11 @@ RowBand CalibratedPlan::colsRead(int i, const uint32_t *windows, size_t count) c
 		firstCol = std::min(firstCol, c);
 		lastCol = std::max(lastCol, c);
 	}
+	return windowColsRead(i, firstCol, lastCol);
+}
+
+RowBand CalibratedPlan::windowColsRead(int i, int firstCol, int lastCol) const
+{
 	if (lastCol < firstCol)
 		return RowBand();
 	// A window at column c reads padded columns [c * step, c * step + model width).
@@ -176,6 +181,11 @@ RowBand CalibratedPlan::colsRead(int i, const uint32_t *windows, size_t count) c
 	const int windowCols = params_.modelDsPadW / params_.shrink;
 	return RowBand{ firstCol * step - padW_, lastCol * step + windowCols - padW_ }.clipped(
 		scales_.levels[i].width);
+}
+
+LevelRect CalibratedPlan::windowsRect(int i, int firstRow, int lastRow, int firstCol, int lastCol) const
+{
+	return LevelRect{ rowsOfWindowRows(i, firstRow, lastRow), windowColsRead(i, firstCol, lastCol) };
 }
 
 size_t CalibratedPlan::largestLevelWindows() const

@@ -58,6 +58,9 @@ public:
 	RowBand rowsRead(int i, const uint32_t *windows, size_t count) const;
 	// The columns of level i (before padding) that they read, as a range.
 	RowBand colsRead(int i, const uint32_t *windows, size_t count) const;
+	// The cells (rows and columns of level i before padding) that the windows of rows
+	// firstRow..lastRow and columns firstCol..lastCol read.
+	LevelRect windowsRect(int i, int firstRow, int lastRow, int firstCol, int lastCol) const;
 	// Windows of level i, packed row << 16 | column, columns outer (the toolbox's order).
 	const uint32_t *windows(int i) const { return windows_.data() + first_[i]; }
 	size_t windowCount(int i) const { return first_[i + 1] - first_[i]; }
@@ -93,6 +96,7 @@ public:
 			   int &c1) const;
 
 private:
+	RowBand windowColsRead(int i, int firstCol, int lastCol) const;
 	ModelParams params_;
 	WindowGeometry geometry_;
 	ScaleList scales_;

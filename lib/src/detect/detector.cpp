@@ -152,6 +152,7 @@ Status DetectorImpl::initCalibrated()
 	}
 	gateSparse_ = config.sparseDense && config.staticRejection.enabled &&
 		      config.staticRejection.gateSparse;
+	rectsPerFrame_ = rowsPerFrame_ && gateSparse_;
 	if (gateSparse_) {
 		size_t total = 0;
 		for (int i = 0; i < scales.count; i++)
@@ -262,6 +263,17 @@ void DetectorImpl::planFrameRows(int firstRegion, bool sparse)
 
 Status DetectorImpl::classifyListed(int i, size_t n, double &ms)
 {
+	if (rectsPerFrame_) {
+		// Level i prepared in the rectangles prepareRects() gave it (each window reads
+		// inside one of them; they are two cells apart, so the smoothing at the edge of
+		// one does not reach into another).
+		LevelChannels channels;
+		for (int k = 0; k < levelRectCount_[i]; k++)
+			channels = pyramid.level(i, &levelRects_[i][k].rows, &levelRects_[i][k].cols);
+		if (levelRectCount_[i] > 0)
+			ms += classifyList(i, channels, frameList_.data(), n);
+		return Status::success();
+	}
 	// Level i prepared only in the rows and columns these windows read.
 	const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
 	const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
@@ -274,12 +286,59 @@ Status DetectorImpl::classifyListed(int i, size_t n, double &ms)
 	return Status::success();
 }
 
+Status DetectorImpl::prepareRects(int firstRegion, bool sparse)
+{
+	const auto t0 = Clock::now();
+	int count = 0;
+	for (int i = 0; i < planLevels_; i++) {
+		int &n = levelRectCount_[i];
+		n = 0;
+		if (!levelNeeded_[i])
+			continue;
+		LevelRect *set = levelRects_[i];
+		if (sparse)
+			for (size_t k = 0; k < sparseListCount_[i]; k++) {
+				const int r = int(sparseList_[i][k] >> 16), c = int(sparseList_[i][k] & 0xFFFF);
+				addMerged(set, n, Pyramid::kMaxRects, plan_.windowsRect(i, r, r, c, c), 2);
+			}
+		for (int g = firstRegion; g < regions_.count(); g++) {
+			const DenseRegion &region = regions_[g];
+			int r0, r1, c0, c1;
+			if (!plan_.windowsInside(i, region.x0, region.y0, region.x1, region.y1, r0, r1, c0, c1))
+				continue;
+			// Only the rows where the region's columns have plausible windows.
+			int first = r1 + 1, last = r0 - 1;
+			for (int c = c0; c <= c1; c++) {
+				int f, l;
+				plan_.plausibleRows(i, c, f, l);
+				if (std::max(f, r0) <= std::min(l, r1)) {
+					first = std::min(first, std::max(f, r0));
+					last = std::max(last, std::min(l, r1));
+				}
+			}
+			if (first <= last)
+				addMerged(set, n, Pyramid::kMaxRects, plan_.windowsRect(i, first, last, c0, c1), 2);
+		}
+		for (int k = 0; k < n; k++) {
+			rectLevels_[count] = i;
+			rectList_[count++] = set[k];
+		}
+	}
+	stats.msCandidates += msSince(t0);
+	return pyramid.ensureRects(input_, rectLevels_, rectList_, count);
+}
+
 Status DetectorImpl::classifySparseDense(double &ms)
 {
 	const ScaleList &scales = pyramid.scales();
 	std::fill(evaluated_.begin(), evaluated_.end(), uint8_t(0));
 	// Pass 1, every level: the sparse grid and the regions kept from earlier frames.
 	const int oldRegions = regions_.count();
+	if (rectsPerFrame_) {
+		const Status st = prepareRects(0, true);
+		if (!st.ok())
+			return st;
+	}
 	for (int i = 0; i < scales.count; i++) {
 		if (!levelNeeded_[i])
 			continue;
@@ -318,7 +377,11 @@ Status DetectorImpl::classifySparseDense(double &ms)
 	stats.msCandidates += msSince(tRegions);
 	// Pass 2: the new regions' windows, on the levels that have any. The rows they
 	// read that pass 1 did not are computed first, for all levels at once.
-	if (rowsPerFrame_ && regions_.count() > oldRegions) {
+	if (rectsPerFrame_ && regions_.count() > oldRegions) {
+		const Status st = prepareRects(oldRegions, false);
+		if (!st.ok())
+			return st;
+	} else if (rowsPerFrame_ && regions_.count() > oldRegions) {
 		planFrameRows(oldRegions, false);
 		const Status st = pyramid.ensureRows(input_, frameRows_);
 		if (!st.ok())
@@ -402,6 +465,7 @@ void DetectorImpl::addBoxes(int levelIndex, const kernels::WindowHit *hits, int 
 
 Status DetectorImpl::detect(const ImageView &image, Detections &out)
 {
+	
 	out = Detections();
 	stats = FrameStats();
 	Status st = checkImage(image);
@@ -441,7 +505,11 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	const RowBand *rows = nullptr;
 	if (sparseDense)
 		selectSparse();
-	if (sparseDense && rowsPerFrame_) {
+	if (sparseDense && rectsPerFrame_) {
+		for (int i = 0; i < planLevels_; i++)
+			frameRows_[i] = RowBand(); // nothing yet: prepareRects() asks for rectangles
+		rows = frameRows_;
+	} else if (sparseDense && rowsPerFrame_) {
 		planFrameRows(0, true);
 		rows = frameRows_;
 	} else if (calibrated) {

@@ -31,7 +31,11 @@ public:
 	// Whether build() computes only the first pass's rows and extends them on demand
 	// (set at init when the pyramid can; tests turn it off to compare).
 	bool rowsPerFrame() const { return rowsPerFrame_; }
-	void setRowsPerFrame(bool on) { rowsPerFrame_ = on && rowsPerFrameAllowed_; }
+	void setRowsPerFrame(bool on)
+	{
+		rowsPerFrame_ = on && rowsPerFrameAllowed_;
+		rectsPerFrame_ = rowsPerFrame_ && gateSparse_;
+	}
 
 private:
 	Status checkImage(const ImageView &image) const;
@@ -54,6 +58,10 @@ private:
 	void planFrameRows(int firstRegion, bool sparse);
 	// Classify the first n windows of frameList_ on level i, adding the time to ms.
 	Status classifyListed(int i, size_t n, double &ms);
+	// Rectangle mode: the cells each level's windows read this pass (levelRects_), the
+	// sparse grid's (with `sparse`) and those of regions firstRegion.., merged; then
+	// the pyramid computes what they need (Pyramid::ensureRects).
+	Status prepareRects(int firstRegion, bool sparse);
 	// Windows of level i inside region r not evaluated yet, appended to frameList_.
 	size_t collectDense(int i, const DenseRegion &r, size_t n);
 	// Ground position and world height of the final detections.
@@ -70,6 +78,14 @@ private:
 	// Sparse-dense mode with a pyramid that can extend its rows: build() computes only
 	// what the first pass reads (frameRows_), new regions extend it (Pyramid::ensureRows).
 	bool rowsPerFrame_ = false, rowsPerFrameAllowed_ = false;
+	// With the static-scene gate, the sparse grid is gone from still parts of the scene,
+	// and full-width rows would compute them anyway: the pyramid is then computed in
+	// rectangles around what each pass reads (Pyramid::ensureRects).
+	bool rectsPerFrame_ = false;
+	LevelRect levelRects_[kMaxLevels][Pyramid::kMaxRects];
+	int levelRectCount_[kMaxLevels] = {};
+	int rectLevels_[kMaxLevels * Pyramid::kMaxRects] = {};
+	LevelRect rectList_[kMaxLevels * Pyramid::kMaxRects];
 	int planLevels_ = 0;
 	RowBand sparseRows_[kMaxLevels]; // the rows the sparse grid reads
 	RowBand frameRows_[kMaxLevels];
