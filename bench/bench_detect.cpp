@@ -3,7 +3,10 @@
 // decoded first, then each is detected `--repeat` times; prints median and mean per
 // stage. Usage:
 //   bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--first F]
-//                [--count N] [--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--reject-static] [--format NAME]
+//                [--count N] [--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]]
+//                [--reject-static] [--format NAME]
+// --first: the F-th frame (1-based, in name order) is the first. --reject-static: static-
+// scene rejection (and its gate of the sparse grid), whose background takes 50 frames.
 // --format converts the decoded frames to a camera pixel format first (NV12, YUYV,
 // BayerRGGB8, ...: docs/pixel-formats.md), so the detector's input conversion is timed.
 #include <algorithm>

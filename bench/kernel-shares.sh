@@ -6,11 +6,22 @@
 # with placed levels. Prints M instructions per frame for each kernel in each mode, their
 # ratio and each kernel's share of its mode's total. A kernel whose ratio is above the
 # total's gains the calibrated mode more when it gets faster; below, the generic mode.
-#   bash bench/kernel-shares.sh [FIRST]      (default 400; needs a build with bench/)
+# With --reject-static the calibrated mode is calibrated-static (static-scene rejection
+# and its gate of the sparse grid): its background needs 50 frames first, so it runs
+# frames FIRST-50 .. FIRST+2 and FIRST-50 .. FIRST-1 and keeps the difference.
+#   bash bench/kernel-shares.sh [FIRST] [--reject-static]   (default 400; needs a build
+#   with bench/)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-first=${1:-400}
+first=400
+static=
+for a in "$@"; do
+	case $a in
+	--reject-static) static=1 ;;
+	*) first=$a ;;
+	esac
+done
 bench=${CALPED_BUILD_DIR:-build}/bench/bench_detect
 model=models/AcfInriaDetector.cpm
 calib=../shared/data/pets2009-s2l1/View_001.xml
@@ -24,16 +35,20 @@ if [[ ! -f "$calib" ]]; then
 	exit 0
 fi
 bash scripts/install-deps.sh >/dev/null
+if [[ -n $static && $first -le 50 ]]; then
+	echo "kernel-shares: with --reject-static FIRST must be above 50" >&2
+	exit 1
+fi
 bash scripts/fetch-pets.sh "$((first + 2))" >/dev/null
 tmp=$(mktemp -d)
 trap '[[ -n "${CALPED_KEEP:-}" ]] || rm -rf "$tmp"' EXIT
 
-profile() { # name, bench arguments... -> $tmp/name.tsv: kernel <tab> instructions
-	local name=$1
-	shift
+profile() { # name, first frame, frames, bench arguments... -> $tmp/name.tsv: kernel <tab> instructions
+	local name=$1 from=$2 count=$3
+	shift 3
 	valgrind --tool=callgrind --callgrind-out-file="$tmp/$name.out" \
 		--toggle-collect='calped::Detector::detect*' "$bench" --model "$model" \
-		--frames data/pets/frames --first "$first" --count 3 --repeat 1 --resize 2 \
+		--frames data/pets/frames --first "$from" --count "$count" --repeat 1 --resize 2 \
 		--resize-in-pyramid --calib "$calib" "$@" >/dev/null 2>&1
 	# Self cost per function, grouped: kernels by name without their build suffix (the
 	# resampler's column pass counts as resampling), everything else as "other".
@@ -54,13 +69,30 @@ profile() { # name, bench arguments... -> $tmp/name.tsv: kernel <tab> instructio
 		END { for (k in sum) print k "\t" sum[k] }' >"$tmp/$name.tsv"
 }
 
-profile calibrated --calibrated --calibrated-pyramid
-profile generic
+# Per frame: (a - b) / frames, kernel by kernel (b may be absent: a / frames).
+perFrame() { # out, frames, a.tsv [b.tsv]
+	awk -F'\t' -v frames="$2" 'FNR == NR { a[$1] = $2; next } { b[$1] = $2 }
+		END { for (k in a) print k "\t" (a[k] - b[k]) / frames }' "$3" "${4:-/dev/null}" >"$1"
+}
+
+# bench_detect detects its first frame once more before timing: 4 calls for 3 frames.
+profile generic "$first" 3
+perFrame "$tmp/generic.pf" 4 "$tmp/generic.tsv"
+if [[ -n $static ]]; then
+	label="calibrated-static, placed"
+	profile all "$((first - 50))" 53 --calibrated --calibrated-pyramid --reject-static &
+	profile warmup "$((first - 50))" 50 --calibrated --calibrated-pyramid --reject-static &
+	wait
+	perFrame "$tmp/calibrated.pf" 3 "$tmp/all.tsv" "$tmp/warmup.tsv"
+else
+	label="calibrated, placed"
+	profile calibrated "$first" 3 --calibrated --calibrated-pyramid
+	perFrame "$tmp/calibrated.pf" 4 "$tmp/calibrated.tsv"
+fi
 
 echo "PETS frames $first-$((first + 2)), resize 2 inside the pyramid, M instructions per frame"
-echo "(4 detect calls: bench_detect's warm-up and 3 frames):"
 echo
-echo "| kernel | calibrated, placed | share | generic | share | ratio |"
+echo "| kernel | $label | share | generic | share | ratio |"
 echo "|---|---:|---:|---:|---:|---:|"
 awk -F'\t' '
 	FNR == 1 { file++ }
@@ -75,10 +107,10 @@ awk -F'\t' '
 		for (i = 0; i < n; i++) {
 			k = order[i]
 			if (c[k] + g[k] < 0.005 * (ct + gt)) { oc += c[k]; og += g[k]; continue }
-			printf "| %s | %.1f | %.1f%% | %.1f | %.1f%% | %s |\n", k, c[k] / 4e6, 100 * c[k] / ct,
-				g[k] / 4e6, 100 * g[k] / gt, (g[k] > 0 ? sprintf("%.2f", c[k] / g[k]) : "-")
+			printf "| %s | %.1f | %.1f%% | %.1f | %.1f%% | %s |\n", k, c[k] / 1e6, 100 * c[k] / ct,
+				g[k] / 1e6, 100 * g[k] / gt, (g[k] > 0 ? sprintf("%.2f", c[k] / g[k]) : "-")
 		}
-		if (oc + og >= 2e5) printf "| (the rest) | %.1f | %.1f%% | %.1f | %.1f%% | %.2f |\n", oc / 4e6, 100 * oc / ct,
-			og / 4e6, 100 * og / gt, (og > 0 ? oc / og : 0)
-		printf "| **total** | **%.1f** | | **%.1f** | | **%.2f** |\n", ct / 4e6, gt / 4e6, ct / gt
-	}' "$tmp/calibrated.tsv" "$tmp/generic.tsv"
+		if (oc + og >= 5e4) printf "| (the rest) | %.1f | %.1f%% | %.1f | %.1f%% | %.2f |\n", oc / 1e6, 100 * oc / ct,
+			og / 1e6, 100 * og / gt, (og > 0 ? oc / og : 0)
+		printf "| **total** | **%.1f** | | **%.1f** | | **%.2f** |\n", ct / 1e6, gt / 1e6, ct / gt
+	}' "$tmp/calibrated.pf" "$tmp/generic.pf"
