@@ -23,10 +23,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 # P = K [R | t] with R = tilt(pitch) * level (camera z along world y, image y down),
-# t = -R * (0, 0, height), in metres.
+# t = -R * (0, 0, height), in metres. A positive pitch of tilt() turns the optical axis
+# up, (0, cos, sin) in the world: pitched down by `deg` is tilt(-deg), which puts the
+# horizon above the image centre.
 writeP() {
 	awk -v h="$1" -v deg="$2" 'BEGIN {
-		f = 500; cx = 384; cy = 288; p = deg * atan2(0, -1) / 180; c = cos(p); s = sin(p)
+		f = 500; cx = 384; cy = 288; p = -deg * atan2(0, -1) / 180; c = cos(p); s = sin(p)
 		print "# synthetic camera " h " m above the ground, pitched down " deg " degrees"
 		print "unit: m"
 		printf "%.6f %.6f %.6f %.6f\n", f, cx * c, cx * s, -cx * s * h

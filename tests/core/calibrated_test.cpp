@@ -33,6 +33,28 @@ CameraModel levelCamera(double f, double cx, double cy)
 	return camera;
 }
 
+// A 640x480 camera (focal length 500) `height` metres above the ground (world z up),
+// looking along +y with its optical axis pitched down by `downDeg` degrees: the horizon
+// 500 tan(downDeg) pixels above the image centre.
+CameraModel groundCamera(double height, double downDeg)
+{
+	Eigen::Matrix3d K;
+	K << 500, 0, 320, 0, 500, 240, 0, 0, 1;
+	Eigen::Matrix3d level;
+	level << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	// A rotation by p about the camera x axis turns the optical axis to (0, cos p, sin p)
+	// in the world: down is a negative p.
+	const double p = -downDeg * 3.14159265358979 / 180;
+	Eigen::Matrix3d tilt;
+	tilt << 1, 0, 0, 0, std::cos(p), std::sin(p), 0, -std::sin(p), std::cos(p);
+	const Eigen::Matrix3d R = tilt * level;
+	const Eigen::Vector3d t = -R * Eigen::Vector3d(0, 0, height);
+	CameraModel camera;
+	const Status st = CameraModel::fromPinhole(K, R, t, LengthUnit::Metre, camera);
+	EXPECT_TRUE(st.ok()) << st.message();
+	return camera;
+}
+
 } // namespace
 
 TEST(CalibratedScales, ThesisWorkedExample)
@@ -159,19 +181,10 @@ TEST(CalibratedDetector, RejectsMissingCameraAndOtherFrameSizes)
 
 TEST(CalibratedDetector, StaticGateSkipsSparseWindowsWhereNothingMoves)
 {
-	// A camera 3 m up looking down at the ground; a textured frame seen three times is
-	// the background (warm-up 2), then a bright block appears in the middle.
-	Eigen::Matrix3d K;
-	K << 500, 0, 320, 0, 500, 240, 0, 0, 1;
-	Eigen::Matrix3d level;
-	level << 1, 0, 0, 0, 0, -1, 0, 1, 0;
-	const double pitch = -20 * 3.14159265358979 / 180; // towards the ground
-	Eigen::Matrix3d tilt;
-	tilt << 1, 0, 0, 0, std::cos(pitch), std::sin(pitch), 0, -std::sin(pitch), std::cos(pitch);
-	const Eigen::Matrix3d R = tilt * level;
-	const Eigen::Vector3d t = -R * Eigen::Vector3d(0, 0, 3.0);
-	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, t, LengthUnit::Metre, camera).ok());
+	// A camera 3 m up looking 20 degrees down at the ground; a textured frame seen three
+	// times is the background (warm-up 2), then a bright block appears in the middle.
+	const CameraModel camera = groundCamera(3.0, 20);
+	ASSERT_FALSE(::testing::Test::HasFailure());
 	const Model model = test::randomModel(5);
 	const auto ground = test::randomImage(3, 640, 480);
 	auto withBlock = ground;
@@ -493,23 +506,15 @@ TEST(CalibratedDetector, PetsPlacedPyramidComputesLessFindsTheSamePeople)
 
 TEST(CalibratedDetector, LowCamerasStayCheaperThanGeneric)
 {
-	// Cameras 1-2 m above the ground (robots, cars), level or pitched by 5 degrees: the
-	// horizon crosses the image and people of every distance overlap there. A random model
-	// with a permissive cascade fires often, so dense regions open in every frame.
+	// Cameras 1-2 m above the ground (robots, cars), level or pitched down by 5 degrees
+	// (the horizon 44 pixels above the image centre): the horizon crosses the image and
+	// people of every distance overlap there. A random model with a permissive cascade
+	// fires often, so dense regions open in every frame.
 	const Model model = test::randomModel(11, 256);
 	for (double camHeight : { 1.0, 1.5, 2.0 })
 		for (double pitchDeg : { 0.0, 5.0 }) {
-			const double pitch = pitchDeg * 3.14159265358979 / 180;
-			Eigen::Matrix3d K;
-			K << 500, 0, 320, 0, 500, 240, 0, 0, 1;
-			Eigen::Matrix3d level;
-			level << 1, 0, 0, 0, 0, -1, 0, 1, 0;
-			Eigen::Matrix3d tilt; // rotation about the camera x axis by `pitch`
-			tilt << 1, 0, 0, 0, std::cos(pitch), std::sin(pitch), 0, -std::sin(pitch), std::cos(pitch);
-			const Eigen::Matrix3d R = tilt * level;
-			const Eigen::Vector3d t = -R * Eigen::Vector3d(0, 0, camHeight);
-			CameraModel camera;
-			ASSERT_TRUE(CameraModel::fromPinhole(K, R, t, LengthUnit::Metre, camera).ok());
+			const CameraModel camera = groundCamera(camHeight, pitchDeg);
+			ASSERT_FALSE(::testing::Test::HasFailure());
 			// Generic, calibrated, calibrated with placed pyramid levels.
 			uint64_t windows[3] = {};
 			double ms[3] = {};
