@@ -134,20 +134,47 @@ TEST(PyramidBands, RowsEqualTheFullPyramidWithPlacedLevels)
 	}
 }
 
+// Two pyramids over one image, for the tests of placed levels computed in parts: `full`
+// computes everything, `part` what a test asks of it.
+struct PlacedPair {
+	ModelParams p;
+	Pyramid full, part;
+	test::FormattedImage image;
+	FrameInput input;
+	ScaleList scales;
+
+	void init(const std::vector<uint8_t> &rgb, int width, int height, PixelFormat format)
+	{
+		ASSERT_TRUE(full.init(p, width, height).ok());
+		ASSERT_TRUE(part.init(p, width, height).ok());
+		image = test::encodeImage(rgb.data(), width, height, format);
+		ASSERT_TRUE(input.init(width, height, false).ok());
+		ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
+	}
+	// Both placed for these bands (reach 5), `full` built whole.
+	void place(const RowBand *needed)
+	{
+		int source[kMaxLevels];
+		ASSERT_TRUE(chooseComputedLevels(p, scales, needed, full.channelMargin(), 5,
+						 image.view().width, image.view().height, source));
+		ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
+		ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
+		input.begin(image.view());
+		ASSERT_TRUE(full.build(input).ok());
+	}
+};
+
 // Placed levels built in some bands, then extended to others (Pyramid::ensureRows, one
 // level at a time or all at once): the other bands equal the full pyramid's.
 void compareExtendedBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
 			  PixelFormat format, bool allAtOnce)
 {
-	ModelParams p;
-	Pyramid full, part;
-	ASSERT_TRUE(full.init(p, width, height).ok());
-	ASSERT_TRUE(part.init(p, width, height).ok());
-	const test::FormattedImage image = test::encodeImage(rgb.data(), width, height, format);
-	FrameInput input;
-	ASSERT_TRUE(input.init(width, height, false).ok());
-	ScaleList scales;
-	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
+	PlacedPair pair;
+	pair.init(rgb, width, height, format);
+	ASSERT_FALSE(::testing::Test::HasFatalFailure());
+	Pyramid &full = pair.full, &part = pair.part;
+	FrameInput &input = pair.input;
+	const ScaleList &scales = pair.scales;
 	std::mt19937 rng(seed);
 	RowBand first[kMaxLevels], second[kMaxLevels], all[kMaxLevels];
 	randomBands(rng, scales, first);
@@ -157,14 +184,10 @@ void compareExtendedBands(const std::vector<uint8_t> &rgb, int width, int height
 		all[i] = first[i];
 		all[i].add(second[i]);
 	}
-	int source[kMaxLevels];
-	ASSERT_TRUE(chooseComputedLevels(p, scales, all, full.channelMargin(), 5, width, height, source));
-	ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
-	ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
+	pair.place(all);
+	ASSERT_FALSE(::testing::Test::HasFatalFailure());
 	ASSERT_TRUE(part.rowsExtensible(width, height));
-	input.begin(image.view());
-	ASSERT_TRUE(full.build(input).ok());
-	input.begin(image.view());
+	input.begin(pair.image.view());
 	ASSERT_TRUE(part.build(input, first).ok());
 	if (allAtOnce) {
 		ASSERT_TRUE(part.ensureRows(input, second).ok());
@@ -200,25 +223,18 @@ TEST(PyramidBands, ExtendedRowsEqualTheFullPyramid)
 void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
 		       PixelFormat format)
 {
-	ModelParams p;
-	Pyramid full, part;
-	ASSERT_TRUE(full.init(p, width, height).ok());
-	ASSERT_TRUE(part.init(p, width, height).ok());
-	const test::FormattedImage image = test::encodeImage(rgb.data(), width, height, format);
-	FrameInput input;
-	ASSERT_TRUE(input.init(width, height, false).ok());
-	ScaleList scales;
-	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
+	PlacedPair pair;
+	pair.init(rgb, width, height, format);
+	ASSERT_FALSE(::testing::Test::HasFatalFailure());
+	Pyramid &full = pair.full, &part = pair.part;
+	FrameInput &input = pair.input;
+	const ScaleList &scales = pair.scales;
 	RowBand all[kMaxLevels], none[kMaxLevels];
 	for (int i = 0; i < scales.count; i++)
 		all[i] = RowBand{ 0, scales.levels[i].height };
-	int source[kMaxLevels];
-	ASSERT_TRUE(chooseComputedLevels(p, scales, all, full.channelMargin(), 5, width, height, source));
-	ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
-	ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
-	input.begin(image.view());
-	ASSERT_TRUE(full.build(input).ok());
-	input.begin(image.view());
+	pair.place(all);
+	ASSERT_FALSE(::testing::Test::HasFatalFailure());
+	input.begin(pair.image.view());
 	ASSERT_TRUE(part.build(input, none).ok());
 	EXPECT_EQ(part.computedCount, 0);
 	std::mt19937 rng(seed);

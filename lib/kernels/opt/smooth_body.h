@@ -96,20 +96,32 @@ inline void padRow(const uint16_t *row, int width, int r, uint32_t *padded)
 		padded[r + x] = row[x];
 }
 
+// Row m of the horizontal result padded by r rows of symmetric padding at each end.
+inline const uint32_t *triSumPaddedRow(const TriSumScratch &s, int m, int width, int height, int r)
+{
+	return s.horiz + size_t(reflect(m - r, height)) * width;
+}
+
+// The vertical pass's start: acc2 empty, acc1 holding the first r padded rows.
+inline void triSumColumnsStart(const TriSumScratch &s, int width, int height, int r)
+{
+	for (int x = 0; x < width; x++)
+		s.acc1[x] = s.acc2[x] = 0;
+	for (int j = 0; j < r; j++) {
+		const uint32_t *qj = triSumPaddedRow(s, j, width, height, r);
+		for (int x = 0; x < width; x++)
+			s.acc1[x] += qj[x];
+	}
+}
+
 // The vertical pass: the same two running sums as triangleRow, a column per lane, over
 // whole rows of the horizontal result s.horiz, into dst.
 inline void triSumColumnsBody(const TriSumScratch &s, uint32_t *dst, ptrdiff_t dstStride,
 			      int width, int height, int r)
 {
-	auto q = [&](int m) { return s.horiz + size_t(reflect(m - r, height)) * width; };
+	auto q = [&](int m) { return triSumPaddedRow(s, m, width, height, r); };
 	uint32_t *acc1 = s.acc1, *acc2 = s.acc2;
-	for (int x = 0; x < width; x++)
-		acc1[x] = acc2[x] = 0;
-	for (int j = 0; j < r; j++) {
-		const uint32_t *qj = q(j);
-		for (int x = 0; x < width; x++)
-			acc1[x] += qj[x];
-	}
+	triSumColumnsStart(s, width, height, r);
 	for (int m = 0; m < height + r; m++) {
 		const uint32_t *in = q(m + r);
 		const uint32_t *leaving = q(m);

@@ -45,15 +45,9 @@ void boxRow(const uint32_t *in, int n, int r, uint32_t *out)
 void verticalPass(const TriSumScratch &s, uint32_t *dst, ptrdiff_t dstStride, int width,
 		  int height, int r)
 {
-	auto q = [&](int m) { return s.horiz + size_t(reflect(m - r, height)) * width; };
+	auto q = [&](int m) { return triSumPaddedRow(s, m, width, height, r); };
 	uint32_t *acc1 = s.acc1, *acc2 = s.acc2;
-	for (int x = 0; x < width; x++)
-		acc1[x] = acc2[x] = 0;
-	for (int j = 0; j < r; j++) {
-		const uint32_t *qj = q(j);
-		for (int x = 0; x < width; x++)
-			acc1[x] += qj[x];
-	}
+	triSumColumnsStart(s, width, height, r);
 	for (int m = 0; m < height + r; m++) {
 		const uint32_t *in = q(m + r);
 		const uint32_t *leaving = q(m);
