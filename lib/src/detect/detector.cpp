@@ -332,7 +332,8 @@ Status DetectorImpl::classifySparseDense(double &ms)
 {
 	const ScaleList &scales = pyramid.scales();
 	std::fill(evaluated_.begin(), evaluated_.end(), uint8_t(0));
-	// Pass 1, every level: the sparse grid and the regions kept from earlier frames.
+	// Pass 1, every level: the sparse grid (what moves of it, with the static gate) and
+	// the regions kept from earlier frames.
 	const int oldRegions = regions_.count();
 	if (rectsPerFrame_) {
 		const Status st = prepareRects(0, true);
@@ -375,8 +376,9 @@ Status DetectorImpl::classifySparseDense(double &ms)
 	for (int k = 0; k < found; k++)
 		regions_.addAround(candidates_[order_[k]]);
 	stats.msCandidates += msSince(tRegions);
-	// Pass 2: the new regions' windows, on the levels that have any. The rows they
-	// read that pass 1 did not are computed first, for all levels at once.
+	// Pass 2: the new regions' windows, on the levels that have any. What they read that
+	// pass 1 did not (rows, or rectangles with the static gate) is computed first, for
+	// all levels at once.
 	if (rectsPerFrame_ && regions_.count() > oldRegions) {
 		const Status st = prepareRects(oldRegions, false);
 		if (!st.ok())
@@ -465,7 +467,6 @@ void DetectorImpl::addBoxes(int levelIndex, const kernels::WindowHit *hits, int 
 
 Status DetectorImpl::detect(const ImageView &image, Detections &out)
 {
-	
 	out = Detections();
 	stats = FrameStats();
 	Status st = checkImage(image);
