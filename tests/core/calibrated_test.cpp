@@ -393,10 +393,10 @@ void expectSameOnPets(Detector &a, Detector &b, int frames, int &detections, uin
 	}
 }
 
-TEST(CalibratedDetector, PetsRowsPerFrameGiveTheSameDetections)
+TEST(CalibratedDetector, PetsRectanglesGiveTheSameDetections)
 {
-	// With placed levels, build() computes only the rows the sparse grid and the kept
-	// regions read, and new regions extend them: the detections must be those of the
+	// With placed levels, build() computes nothing and each pass has the pyramid computed
+	// in rectangles around what its windows read: the detections must be those of the
 	// plan's fixed bands, exactly.
 	Model model;
 	CameraModel camera;
@@ -406,23 +406,23 @@ TEST(CalibratedDetector, PetsRowsPerFrameGiveTheSameDetections)
 	DetectorConfig cfg = petsConfig(camera, true);
 	cfg.calibratedPyramid = true;
 	cfg.method = DetectionMethod::Calibrated;
-	std::unique_ptr<Detector> fixed, perFrame;
+	std::unique_ptr<Detector> fixed, rects;
 	ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
-	ASSERT_TRUE(Detector::create(model, cfg, perFrame).ok());
-	ASSERT_TRUE(perFrame->impl().rowsPerFrame());
-	fixed->impl().setRowsPerFrame(false);
+	ASSERT_TRUE(Detector::create(model, cfg, rects).ok());
+	ASSERT_TRUE(rects->impl().rectsPerFrame());
+	fixed->impl().setRectsPerFrame(false);
 	int detections = 0;
 	uint64_t skipped = 0;
-	expectSameOnPets(*fixed, *perFrame, 8, detections, skipped);
+	expectSameOnPets(*fixed, *rects, 8, detections, skipped);
 	ASSERT_FALSE(::testing::Test::HasFatalFailure());
 	EXPECT_EQ(skipped, 0u); // no static scene, no gate
-	const long extensions = perFrame->impl().pyramid.rowExtensions;
-	std::printf("PETS frames 1-8, placed levels: %d detections either way; %ld computed-level "
-		    "extensions for new regions\n",
-		    detections, extensions);
+	const long computed = rects->impl().pyramid.rectsComputed;
+	std::printf("PETS frames 1-8, placed levels: %d detections either way; %ld rectangles "
+		    "computed\n",
+		    detections, computed);
 	EXPECT_GT(detections, 0);
-	EXPECT_GT(extensions, 0); // the extension path ran
-	EXPECT_EQ(fixed->impl().pyramid.rowExtensions, 0);
+	EXPECT_GT(computed, 0); // the rectangle path ran
+	EXPECT_EQ(fixed->impl().pyramid.rectsComputed, 0);
 }
 
 TEST(CalibratedDetector, PetsStaticGateRectanglesGiveTheSameDetections)
@@ -443,7 +443,7 @@ TEST(CalibratedDetector, PetsStaticGateRectanglesGiveTheSameDetections)
 	std::unique_ptr<Detector> fixed, rects;
 	ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
 	ASSERT_TRUE(Detector::create(model, cfg, rects).ok());
-	fixed->impl().setRowsPerFrame(false);
+	fixed->impl().setRectsPerFrame(false);
 	int detections = 0;
 	uint64_t skipped = 0;
 	expectSameOnPets(*fixed, *rects, 10, detections, skipped);

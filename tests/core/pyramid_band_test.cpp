@@ -134,107 +134,32 @@ TEST(PyramidBands, RowsEqualTheFullPyramidWithPlacedLevels)
 	}
 }
 
-// Two pyramids over one image, for the tests of placed levels computed in parts: `full`
-// computes everything, `part` what a test asks of it.
-struct PlacedPair {
-	ModelParams p;
-	Pyramid full, part;
-	test::FormattedImage image;
-	FrameInput input;
-	ScaleList scales;
-
-	void init(const std::vector<uint8_t> &rgb, int width, int height, PixelFormat format)
-	{
-		ASSERT_TRUE(full.init(p, width, height).ok());
-		ASSERT_TRUE(part.init(p, width, height).ok());
-		image = test::encodeImage(rgb.data(), width, height, format);
-		ASSERT_TRUE(input.init(width, height, false).ok());
-		ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
-	}
-	// Both placed for these bands (reach 5), `full` built whole.
-	void place(const RowBand *needed)
-	{
-		int source[kMaxLevels];
-		ASSERT_TRUE(chooseComputedLevels(p, scales, needed, full.channelMargin(), 5,
-						 image.view().width, image.view().height, source));
-		ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
-		ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
-		input.begin(image.view());
-		ASSERT_TRUE(full.build(input).ok());
-	}
-};
-
-// Placed levels built in some bands, then extended to others (Pyramid::ensureRows, one
-// level at a time or all at once): the other bands equal the full pyramid's.
-void compareExtendedBands(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
-			  PixelFormat format, bool allAtOnce)
-{
-	PlacedPair pair;
-	pair.init(rgb, width, height, format);
-	ASSERT_FALSE(::testing::Test::HasFatalFailure());
-	Pyramid &full = pair.full, &part = pair.part;
-	FrameInput &input = pair.input;
-	const ScaleList &scales = pair.scales;
-	std::mt19937 rng(seed);
-	RowBand first[kMaxLevels], second[kMaxLevels], all[kMaxLevels];
-	randomBands(rng, scales, first);
-	randomBands(rng, scales, second);
-	for (int i = 0; i < scales.count; i++) {
-		second[i] = second[i].clipped(scales.levels[i].height);
-		all[i] = first[i];
-		all[i].add(second[i]);
-	}
-	pair.place(all);
-	ASSERT_FALSE(::testing::Test::HasFatalFailure());
-	ASSERT_TRUE(part.rowsExtensible(width, height));
-	input.begin(pair.image.view());
-	ASSERT_TRUE(part.build(input, first).ok());
-	if (allAtOnce) {
-		ASSERT_TRUE(part.ensureRows(input, second).ok());
-	}
-	for (int i = 0; i < scales.count; i++) {
-		if (second[i].empty())
-			continue;
-		if (!allAtOnce) {
-			ASSERT_TRUE(part.ensureRows(input, i, second[i]).ok());
-		}
-		const LevelChannels got = part.level(i, &second[i]);
-		const LevelChannels want = full.level(i);
-		checkLevelRows(want, got, second[i], scales.levels[i].height, full.padCellsH(), i);
-	}
-}
-
-TEST(PyramidBands, ExtendedRowsEqualTheFullPyramid)
-{
-	// Odd sizes; RGB8 and a format converted a strip of rows at a time (the colour rows
-	// an extension needs are converted then).
-	const int width = 2 * 160 + 1, height = 2 * 124 - 1;
-	for (uint32_t seed = 1; seed <= 6; seed++) {
-		SCOPED_TRACE(seed);
-		const std::vector<uint8_t> rgb = test::randomImage(50 + seed, width, height);
-		compareExtendedBands(rgb, width, height, seed * 31, PixelFormat::RGB8, seed % 2 == 0);
-		compareExtendedBands(rgb, width, height, seed * 37, PixelFormat::NV12, seed % 2 == 1);
-	}
-}
-
 // Placed levels built with nothing computed, then made preparable in rectangles
 // (Pyramid::ensureRects, twice, as the detector's two passes do): every rectangle equals
 // the full pyramid's level there, padding included where it touches a side.
 void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
 		       PixelFormat format)
 {
-	PlacedPair pair;
-	pair.init(rgb, width, height, format);
-	ASSERT_FALSE(::testing::Test::HasFatalFailure());
-	Pyramid &full = pair.full, &part = pair.part;
-	FrameInput &input = pair.input;
-	const ScaleList &scales = pair.scales;
+	ModelParams p;
+	Pyramid full, part;
+	ASSERT_TRUE(full.init(p, width, height).ok());
+	ASSERT_TRUE(part.init(p, width, height).ok());
+	const test::FormattedImage image = test::encodeImage(rgb.data(), width, height, format);
+	FrameInput input;
+	ASSERT_TRUE(input.init(width, height, false).ok());
+	ScaleList scales;
+	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
 	RowBand all[kMaxLevels], none[kMaxLevels];
 	for (int i = 0; i < scales.count; i++)
 		all[i] = RowBand{ 0, scales.levels[i].height };
-	pair.place(all);
-	ASSERT_FALSE(::testing::Test::HasFatalFailure());
-	input.begin(pair.image.view());
+	int source[kMaxLevels];
+	ASSERT_TRUE(chooseComputedLevels(p, scales, all, full.channelMargin(), 5, width, height, source));
+	ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
+	ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
+	ASSERT_TRUE(part.rectsComputable(width, height));
+	input.begin(image.view());
+	ASSERT_TRUE(full.build(input).ok());
+	input.begin(image.view());
 	ASSERT_TRUE(part.build(input, none).ok());
 	EXPECT_EQ(part.computedCount, 0);
 	std::mt19937 rng(seed);
@@ -287,10 +212,6 @@ void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, u
 		}
 	}
 	EXPECT_GT(part.computedCount, 0);
-	// Rows cannot be extended in the same frame.
-	RowBand some[kMaxLevels];
-	some[0] = RowBand{ 0, 1 };
-	EXPECT_EQ(part.ensureRows(input, some).code(), ErrorCode::InvalidArgument);
 }
 
 TEST(PyramidBands, RectanglesEqualTheFullPyramid)
@@ -331,22 +252,24 @@ TEST(PyramidBands, RectanglesMergeNearNeighbours)
 	}
 }
 
-TEST(PyramidBands, RowsOfTheToolboxOctavesAreNotExtended)
+TEST(PyramidBands, RectanglesOfTheToolboxOctavesAreRefused)
 {
 	// The toolbox's octaves resample the smaller ones from the half-size image, which
-	// ensureRows does not rebuild: it says so instead of returning stale rows.
+	// ensureRects does not rebuild: it says so instead of returning stale channels.
 	const int width = 320, height = 240;
 	ModelParams p;
 	Pyramid pyr;
 	ASSERT_TRUE(pyr.init(p, width, height).ok());
-	EXPECT_FALSE(pyr.rowsExtensible(width, height));
+	EXPECT_FALSE(pyr.rectsComputable(width, height));
 	const std::vector<uint8_t> rgb = test::randomImage(3, width, height);
 	FrameInput input;
 	ASSERT_TRUE(input.init(width, height, false).ok());
 	input.begin(ImageView::rgb8(rgb.data(), width, height));
 	RowBand none[kMaxLevels];
 	ASSERT_TRUE(pyr.build(input, none).ok());
-	const Status st = pyr.ensureRows(input, 0, RowBand{ 0, 5 });
+	const int level = 0;
+	const LevelRect rect{ RowBand{ 0, 5 }, RowBand{ 0, 5 } };
+	const Status st = pyr.ensureRects(input, &level, &rect, 1);
 	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
 	EXPECT_NE(std::string(st.message()).find("half-size"), std::string::npos) << st.message();
 }

@@ -142,17 +142,14 @@ Status DetectorImpl::initCalibrated()
 		}
 	}
 	planLevels_ = scales.count;
-	rowsPerFrameAllowed_ = config.sparseDense && pyramid.rowsExtensible(maxWidth_, maxHeight_);
-	rowsPerFrame_ = rowsPerFrameAllowed_;
+	rectsPerFrameAllowed_ = config.sparseDense && pyramid.rectsComputable(maxWidth_, maxHeight_);
+	rectsPerFrame_ = rectsPerFrameAllowed_;
 	for (int i = 0; i < scales.count; i++) {
-		sparseRows_[i] = plan_.rowsRead(i, plan_.sparseWindows(i), plan_.sparseCount(i));
 		sparseList_[i] = plan_.sparseWindows(i);
 		sparseListCount_[i] = plan_.sparseCount(i);
-		sparseListRows_[i] = sparseRows_[i];
 	}
 	gateSparse_ = config.sparseDense && config.staticRejection.enabled &&
 		      config.staticRejection.gateSparse;
-	rectsPerFrame_ = rowsPerFrame_ && gateSparse_;
 	if (gateSparse_) {
 		size_t total = 0;
 		for (int i = 0; i < scales.count; i++)
@@ -241,23 +238,7 @@ void DetectorImpl::selectSparse()
 		stats.staticSkipped += n - count;
 		sparseList_[i] = list;
 		sparseListCount_[i] = count;
-		sparseListRows_[i] = count == n ? sparseRows_[i] : plan_.rowsRead(i, list, count);
 		kept += count;
-	}
-}
-
-void DetectorImpl::planFrameRows(int firstRegion, bool sparse)
-{
-	// The plan's levels: those of maximum-size frames, the only size this mode takes.
-	for (int i = 0; i < planLevels_; i++) {
-		RowBand rows = sparse ? sparseListRows_[i] : RowBand();
-		for (int r = firstRegion; r < regions_.count(); r++) {
-			const DenseRegion &g = regions_[r];
-			int r0, r1, c0, c1;
-			if (plan_.windowsInside(i, g.x0, g.y0, g.x1, g.y1, r0, r1, c0, c1))
-				rows.add(plan_.rowsOfWindowRows(i, r0, r1));
-		}
-		frameRows_[i] = rows.intersected(levelRows_[i]);
 	}
 }
 
@@ -274,14 +255,10 @@ Status DetectorImpl::classifyListed(int i, size_t n, double &ms)
 			ms += classifyList(i, channels, frameList_.data(), n);
 		return Status::success();
 	}
-	// Level i prepared only in the rows and columns these windows read.
+	// Level i prepared only in the rows and columns these windows read (of the bands
+	// build() computed).
 	const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
 	const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
-	if (rowsPerFrame_) {
-		const Status st = pyramid.ensureRows(input_, i, rows);
-		if (!st.ok())
-			return st;
-	}
 	ms += classifyList(i, pyramid.level(i, &rows, &cols), frameList_.data(), n);
 	return Status::success();
 }
@@ -333,7 +310,7 @@ Status DetectorImpl::classifySparseDense(double &ms)
 	const ScaleList &scales = pyramid.scales();
 	std::fill(evaluated_.begin(), evaluated_.end(), uint8_t(0));
 	// Pass 1, every level: the sparse grid (what moves of it, with the static gate) and
-	// the regions kept from earlier frames.
+	// the regions kept from earlier frames; with rectangles, their pyramid first.
 	const int oldRegions = regions_.count();
 	if (rectsPerFrame_) {
 		const Status st = prepareRects(0, true);
@@ -376,16 +353,10 @@ Status DetectorImpl::classifySparseDense(double &ms)
 	for (int k = 0; k < found; k++)
 		regions_.addAround(candidates_[order_[k]]);
 	stats.msCandidates += msSince(tRegions);
-	// Pass 2: the new regions' windows, on the levels that have any. What they read that
-	// pass 1 did not (rows, or rectangles with the static gate) is computed first, for
-	// all levels at once.
+	// Pass 2: the new regions' windows, on the levels that have any. With rectangles,
+	// what they read that pass 1 did not is computed first, for all levels at once.
 	if (rectsPerFrame_ && regions_.count() > oldRegions) {
 		const Status st = prepareRects(oldRegions, false);
-		if (!st.ok())
-			return st;
-	} else if (rowsPerFrame_ && regions_.count() > oldRegions) {
-		planFrameRows(oldRegions, false);
-		const Status st = pyramid.ensureRows(input_, frameRows_);
 		if (!st.ok())
 			return st;
 	}
@@ -506,16 +477,10 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	const RowBand *rows = nullptr;
 	if (sparseDense)
 		selectSparse();
-	if (sparseDense && rectsPerFrame_) {
-		for (int i = 0; i < planLevels_; i++)
-			frameRows_[i] = RowBand(); // nothing yet: prepareRects() asks for rectangles
-		rows = frameRows_;
-	} else if (sparseDense && rowsPerFrame_) {
-		planFrameRows(0, true);
-		rows = frameRows_;
-	} else if (calibrated) {
+	if (sparseDense && rectsPerFrame_)
+		rows = noRows_; // nothing yet: prepareRects() asks for rectangles
+	else if (calibrated)
 		rows = levelRows_;
-	}
 	st = pyramid.build(input_, rows);
 	if (!st.ok())
 		return st;

@@ -28,14 +28,11 @@ public:
 	FrameStats stats;
 	Pyramid pyramid;
 	Classifier classifier;
-	// Whether build() computes only the first pass's rows and extends them on demand
-	// (set at init when the pyramid can; tests turn it off to compare).
-	bool rowsPerFrame() const { return rowsPerFrame_; }
-	void setRowsPerFrame(bool on)
-	{
-		rowsPerFrame_ = on && rowsPerFrameAllowed_;
-		rectsPerFrame_ = rowsPerFrame_ && gateSparse_;
-	}
+	// Whether the pyramid is computed per frame in rectangles around what each pass reads
+	// (set at init when it can be; tests turn it off to compare with the plan's fixed
+	// bands).
+	bool rectsPerFrame() const { return rectsPerFrame_; }
+	void setRectsPerFrame(bool on) { rectsPerFrame_ = on && rectsPerFrameAllowed_; }
 
 private:
 	Status checkImage(const ImageView &image) const;
@@ -53,9 +50,6 @@ private:
 	// This frame's sparse windows (sparseList_): the plan's, or with the static-scene
 	// gate only those whose box moves.
 	void selectSparse();
-	// The rows of each level (frameRows_) that the windows of regions firstRegion..
-	// read, and with `sparse` the sparse grid's too (the first pass's).
-	void planFrameRows(int firstRegion, bool sparse);
 	// Classify the first n windows of frameList_ on level i, adding the time to ms.
 	Status classifyListed(int i, size_t n, double &ms);
 	// Rectangle mode: the cells each level's windows read this pass (levelRects_), the
@@ -75,29 +69,24 @@ private:
 	CalibratedPlan plan_;
 	bool levelNeeded_[kMaxLevels] = {};
 	RowBand levelRows_[kMaxLevels]; // calibrated: the rows of each level its windows read
-	// Sparse-dense mode with a pyramid that can extend its rows: build() computes only
-	// what the first pass reads (frameRows_), new regions extend it (Pyramid::ensureRows).
-	bool rowsPerFrame_ = false, rowsPerFrameAllowed_ = false;
-	// With the static-scene gate, the sparse grid is gone from still parts of the scene,
-	// and full-width rows would compute them anyway: the pyramid is then computed in
-	// rectangles around what each pass reads (Pyramid::ensureRects).
-	bool rectsPerFrame_ = false;
+	// Sparse-dense mode with a pyramid whose computed levels all come from the image
+	// itself (placed levels): build() computes nothing, and each pass has the pyramid
+	// computed in rectangles around what its windows read (Pyramid::ensureRects).
+	bool rectsPerFrame_ = false, rectsPerFrameAllowed_ = false;
+	int planLevels_ = 0;
+	RowBand noRows_[kMaxLevels]; // build()'s bands when rectangles come later
 	LevelRect levelRects_[kMaxLevels][Pyramid::kMaxRects];
 	int levelRectCount_[kMaxLevels] = {};
 	int rectLevels_[kMaxLevels * Pyramid::kMaxRects] = {};
 	LevelRect rectList_[kMaxLevels * Pyramid::kMaxRects];
-	int planLevels_ = 0;
-	RowBand sparseRows_[kMaxLevels]; // the rows the sparse grid reads
-	RowBand frameRows_[kMaxLevels];
 	// Static-scene gate of the sparse grid (StaticRejection::gateSparse): each sparse
 	// window's box as cells of the static scene (plan order, level after level), and
-	// this frame's sparse windows of each level and the rows they read.
+	// this frame's sparse windows of each level.
 	bool gateSparse_ = false;
 	std::vector<StaticScene::CellRect> sparseCells_;
 	std::vector<uint32_t> movingSparse_;
 	const uint32_t *sparseList_[kMaxLevels] = {};
 	size_t sparseListCount_[kMaxLevels] = {};
-	RowBand sparseListRows_[kMaxLevels];
 	DenseRegions regions_;
 	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
 	std::vector<uint32_t> frameList_;

@@ -365,7 +365,6 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 	width_ = width;
 	height_ = height;
 	planRows(levelRows, width, height);
-	rectFrame_ = false;
 	for (int i = 0; i < scales_.count; i++)
 		doneCount_[i] = doneNext_[i] = 0;
 
@@ -435,69 +434,13 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 	return Status::success();
 }
 
-bool Pyramid::rowsExtensible(int width, int height) const
+bool Pyramid::rectsComputable(int width, int height) const
 {
 	ScaleList scales;
 	return scalesFor(width, height, scales).ok() && halfLevelOf(params_, scales) < 0;
 }
 
-Status Pyramid::ensureRows(FrameInput &input, int i, const RowBand &wanted)
-{
-	if (rectFrame_)
-		return Status::error(ErrorCode::InvalidArgument,
-				     "rows cannot be extended in a frame that computed rectangles");
-	const PyramidLevel &l = scales_.levels[i];
-	const RowBand raw = wanted.clipped(l.height).grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
-	if (rows_[i].raw.contains(raw))
-		return Status::success(); // the per-window fast path
-	RowBand only[kMaxLevels];
-	only[i] = wanted;
-	return ensureRows(input, only);
-}
-
-Status Pyramid::ensureRows(FrameInput &input, const RowBand *wanted)
-{
-	if (halfLevel_ >= 0)
-		return Status::error(ErrorCode::InvalidArgument,
-				     "rows cannot be extended: a half-size image is in use");
-	if (rectFrame_)
-		return Status::error(ErrorCode::InvalidArgument,
-				     "rows cannot be extended in a frame that computed rectangles");
-	// What each computed level must hold: its own rows and its approximated levels'
-	// source rows.
-	RowBand need[kMaxLevels];
-	RowBand raw[kMaxLevels];
-	for (int i = 0; i < scales_.count; i++) {
-		const PyramidLevel &l = scales_.levels[i];
-		raw[i] = wanted[i].clipped(l.height).grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
-		if (raw[i].empty() || rows_[i].raw.contains(raw[i]))
-			continue;
-		if (l.computed) {
-			need[i].add(raw[i]);
-		} else {
-			const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
-			if (!taps)
-				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-			need[l.source].add(sourceRows(taps, raw[i]));
-		}
-	}
-	const auto t0 = Clock::now();
-	for (int i = 0; i < scales_.count; i++) {
-		if (need[i].empty() || rows_[i].raw.contains(need[i]))
-			continue;
-		const Status st = extendComputed(input, i, need[i]);
-		if (!st.ok())
-			return st;
-	}
-	for (int i = 0; i < scales_.count; i++) {
-		rows_[i].wanted.add(wanted[i].clipped(scales_.levels[i].height));
-		rows_[i].raw.add(raw[i]);
-	}
-	msChannels += msSince(t0);
-	return Status::success();
-}
-
-Status Pyramid::levelColour(FrameInput &input, int i, const RowBand &chan, const RowBand *chanCols,
+Status Pyramid::levelColour(FrameInput &input, int i, const RowBand &chan, const RowBand &chanCols,
 			   Plane<uint16_t> in[3])
 {
 	const PyramidLevel &l = scales_.levels[i];
@@ -521,49 +464,7 @@ Status Pyramid::levelColour(FrameInput &input, int i, const RowBand &chan, const
 	for (int c = 0; c < 3; c++)
 		in[c] = levelLuv_[c].view(w1, h1);
 	const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
-	resampleRows(luv, in, 3, yTapsOf, chan, xTaps, chanCols);
-	return Status::success();
-}
-
-Status Pyramid::extendComputed(FrameInput &input, int i, const RowBand &need)
-{
-	const PyramidLevel &l = scales_.levels[i];
-	LevelRows &r = rows_[i];
-	RowBand hull = r.raw;
-	hull.add(need);
-	// The rows this frame does not have yet: above and below its band.
-	const RowBand parts[2] = { r.raw.empty() ? hull : RowBand{ hull.begin, r.raw.begin },
-				   r.raw.empty() ? RowBand() : RowBand{ r.raw.end, hull.end } };
-	const int w1 = l.width * 4, h1 = l.height * 4;
-	Plane<uint16_t> out[kChannelCount];
-	realLevelPlanes(i, out);
-	for (const RowBand &part : parts) {
-		if (part.empty())
-			continue;
-		// Its colour rows with the channels' margin, as build() plans them.
-		const RowBand chan = RowBand{ 4 * part.begin - channelMargin_, 4 * part.end + channelMargin_ }
-					     .clipped(h1);
-		Plane<uint16_t> in[3];
-		const Status st = levelColour(input, i, chan, nullptr, in);
-		if (!st.ok())
-			return st;
-		// The band's edge rows are not exact: compute into the approximation buffer
-		// (free between levels) and keep only the part's rows.
-		Plane<uint16_t> scratch[kChannelCount];
-		planesAt(approx_.data(), l.width, chan.size() / 4, scratch);
-		Plane<const uint16_t> band[3];
-		for (int c = 0; c < 3; c++)
-			band[c] = { in[c].row(chan.begin), w1, chan.size(), in[c].stride };
-		channels_.compute(band, w1, chan.size(), scratch);
-		for (int c = 0; c < kChannelCount; c++)
-			for (int y = part.begin; y < part.end; y++)
-				std::memcpy(out[c].row(y), scratch[c].row(y - chan.begin / 4),
-					    sizeof(uint16_t) * l.width);
-	}
-	if (r.raw.empty())
-		computedCount++;
-	rowExtensions++;
-	r.raw = hull;
+	resampleRows(luv, in, 3, yTapsOf, chan, xTaps, &chanCols);
 	return Status::success();
 }
 
@@ -602,7 +503,6 @@ Status Pyramid::ensureRects(FrameInput &input, const int *levels, const LevelRec
 		const int c = l.source;
 		addMerged(needRects_[c], needCount_[c], kMaxRects, raw, gap);
 	}
-	rectFrame_ = true;
 	const auto t0 = Clock::now();
 	for (int i = 0; i < scales_.count; i++)
 		for (int k = 0; k < needCount_[i]; k++) {
@@ -631,7 +531,7 @@ Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r)
 	const RowBand chanCols = RowBand{ 4 * r.cols.begin - channelMargin_, 4 * r.cols.end + channelMargin_ }
 					 .clipped(w1);
 	Plane<uint16_t> in[3];
-	const Status st = levelColour(input, i, chan, &chanCols, in);
+	const Status st = levelColour(input, i, chan, chanCols, in);
 	if (!st.ok())
 		return st;
 	Plane<uint16_t> scratch[kChannelCount];

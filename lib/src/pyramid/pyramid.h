@@ -52,28 +52,18 @@ public:
 		return build(input, levelRows);
 	}
 
-	// After build() with bands: make level i preparable in rows `wanted` too (level()
-	// then takes them), computing the missing rows of its computed level exactly, and
-	// the colour rows they need, from the same `input`. Lets a caller build only the
-	// rows it expects and extend them when it finds it needs more. Without a
-	// half-size source image only (rowsExtensible); no allocation.
-	Status ensureRows(FrameInput &input, int i, const RowBand &wanted);
-	// The same for every level at once (wanted[i], one per level of scales()): each
-	// computed level is extended once, for all the levels it serves.
-	Status ensureRows(FrameInput &input, const RowBand *wanted);
-	// Whether ensureRows() and ensureRects() work for images of this size (their computed
-	// levels are all resampled from the image itself, as with placed levels).
-	bool rowsExtensible(int width, int height) const;
-
 	// After build() with bands (empty ones: nothing computed yet): make each level
 	// levels[k] preparable in rectangle rects[k] (level(i, &rows, &cols)), computing its
 	// computed level only in the rectangles these need (with the channels' margin) that
-	// this frame has not computed yet: where rows are full-width bands, a scene with a
-	// few people needs far fewer pixels. The sources' rectangles are merged first, and
-	// may be merged further when more than kMaxRects of them are apart. A frame uses
-	// either this or ensureRows(). Without a half-size source image; no allocation.
+	// this frame has not computed yet: where a caller reads a few parts of each level,
+	// that is far fewer pixels than full-width bands. The sources' rectangles are merged
+	// first, and further when more than kMaxRects of them are apart. For images whose
+	// computed levels all come from the image itself (rectsComputable); no allocation.
 	static constexpr int kMaxRects = 32;
 	Status ensureRects(FrameInput &input, const int *levels, const LevelRect *rects, int count);
+	// Whether ensureRects() works for images of this size: no computed level is resampled
+	// from a half-size image (true of placed levels).
+	bool rectsComputable(int width, int height) const;
 
 	// The scale list build() will use for an image of this size (for setup).
 	Status scalesFor(int width, int height, ScaleList &out) const;
@@ -100,11 +90,9 @@ public:
 	int padCellsH() const { return padH_; }
 	int padCellsW() const { return padW_; }
 
-	// Levels whose channels the last build() computed (or ensureRows() began).
+	// Levels whose channels the last build() computed (or ensureRects() began).
 	int computedCount = 0;
-	// Computed levels ensureRows() has extended, and rectangles ensureRects() has
-	// computed, since init (tests, tuning).
-	long rowExtensions = 0;
+	// Rectangles ensureRects() has computed since init (tests, tuning).
 	long rectsComputed = 0;
 	// Time spent in the last build() / level() calls, for FrameStats.
 	double msChannels = 0, msApprox = 0, msSmooth = 0;
@@ -139,14 +127,11 @@ private:
 	// scratch buffer (valid until the next call of the same kind). nullptr: the ratio is
 	// beyond the resampler.
 	const kernels::ResampleTap *levelTaps(int i, int kind);
-	// Channel rows `need` of computed level i added to those this frame has; the
-	// whole-image colour rows `rows` converted if they are not yet (build() too).
-	Status extendComputed(FrameInput &input, int i, const RowBand &need);
 	// Channels of computed level i in rectangle r (cells), exactly, from `input`.
 	Status computeRect(FrameInput &input, int i, const LevelRect &r);
 	// The colour rows `chan` of computed level i's image, in columns `chanCols`: the
 	// whole image's (converted if need be), or resampled from them into levelLuv_.
-	Status levelColour(FrameInput &input, int i, const RowBand &chan, const RowBand *chanCols,
+	Status levelColour(FrameInput &input, int i, const RowBand &chan, const RowBand &chanCols,
 			   Plane<uint16_t> in[3]);
 	void convertLuvRows(FrameInput &input, RowBand rows);
 	void approximate(int i, const RowBand &rows, const RowBand &cols,
@@ -162,7 +147,6 @@ private:
 	LevelRows rows_[kMaxLevels];
 	// ensureRects(): this frame's computed rectangles of each computed level (exact, so
 	// never merged; the oldest is forgotten when full), and the rectangles asked for.
-	bool rectFrame_ = false;
 	LevelRect doneRects_[kMaxLevels][kMaxRects];
 	int doneCount_[kMaxLevels] = {};
 	int doneNext_[kMaxLevels] = {};
