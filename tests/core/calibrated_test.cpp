@@ -396,66 +396,43 @@ void expectSameOnPets(Detector &a, Detector &b, int frames, int &detections, uin
 TEST(CalibratedDetector, PetsRectanglesGiveTheSameDetections)
 {
 	// With placed levels, build() computes nothing and each pass has the pyramid computed
-	// in rectangles around what its windows read: the detections must be those of the
-	// plan's fixed bands, exactly.
+	// in rectangles around what its windows read (Pyramid::ensureRects): the detections
+	// must be those of the plan's fixed bands, exactly. Without static rejection, and with
+	// it and its gate of the sparse grid (a short warm-up, so most frames are gated).
 	Model model;
 	CameraModel camera;
 	if (!loadPets(model, camera))
 		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
 	ASSERT_FALSE(::testing::Test::HasFailure());
-	DetectorConfig cfg = petsConfig(camera, true);
-	cfg.calibratedPyramid = true;
-	cfg.method = DetectionMethod::Calibrated;
-	std::unique_ptr<Detector> fixed, rects;
-	ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
-	ASSERT_TRUE(Detector::create(model, cfg, rects).ok());
-	ASSERT_TRUE(rects->impl().rectsPerFrame());
-	fixed->impl().setRectsPerFrame(false);
-	int detections = 0;
-	uint64_t skipped = 0;
-	expectSameOnPets(*fixed, *rects, 8, detections, skipped);
-	ASSERT_FALSE(::testing::Test::HasFatalFailure());
-	EXPECT_EQ(skipped, 0u); // no static scene, no gate
-	const long computed = rects->impl().pyramid.rectsComputed;
-	std::printf("PETS frames 1-8, placed levels: %d detections either way; %ld rectangles "
-		    "computed\n",
-		    detections, computed);
-	EXPECT_GT(detections, 0);
-	EXPECT_GT(computed, 0); // the rectangle path ran
-	EXPECT_EQ(fixed->impl().pyramid.rectsComputed, 0);
-}
-
-TEST(CalibratedDetector, PetsStaticGateRectanglesGiveTheSameDetections)
-{
-	// With the static scene's gate, placed levels are computed in rectangles around what
-	// each pass reads (Pyramid::ensureRects): the detections must be those of the plan's
-	// fixed bands with the same gate, exactly.
-	Model model;
-	CameraModel camera;
-	if (!loadPets(model, camera))
-		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
-	ASSERT_FALSE(::testing::Test::HasFailure());
-	DetectorConfig cfg = petsConfig(camera, true);
-	cfg.calibratedPyramid = true;
-	cfg.method = DetectionMethod::Calibrated;
-	cfg.staticRejection.enabled = true;
-	cfg.staticRejection.warmupFrames = 3;
-	std::unique_ptr<Detector> fixed, rects;
-	ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
-	ASSERT_TRUE(Detector::create(model, cfg, rects).ok());
-	fixed->impl().setRectsPerFrame(false);
-	int detections = 0;
-	uint64_t skipped = 0;
-	expectSameOnPets(*fixed, *rects, 10, detections, skipped);
-	ASSERT_FALSE(::testing::Test::HasFatalFailure());
-	const long computed = rects->impl().pyramid.rectsComputed;
-	std::printf("PETS frames 1-10, placed levels, static gate: %d detections either way; %llu "
-		    "sparse windows skipped; %ld rectangles computed\n",
-		    detections, (unsigned long long)skipped, computed);
-	EXPECT_GT(detections, 0);
-	EXPECT_GT(skipped, 0u);
-	EXPECT_GT(computed, 0); // the rectangle path ran
-	EXPECT_EQ(fixed->impl().pyramid.rectsComputed, 0);
+	for (bool gate : { false, true }) {
+		SCOPED_TRACE(gate ? "static gate" : "no gate");
+		DetectorConfig cfg = petsConfig(camera, true);
+		cfg.calibratedPyramid = true;
+		cfg.method = DetectionMethod::Calibrated;
+		cfg.staticRejection.enabled = gate;
+		cfg.staticRejection.warmupFrames = 3;
+		std::unique_ptr<Detector> fixed, rects;
+		ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
+		ASSERT_TRUE(Detector::create(model, cfg, rects).ok());
+		ASSERT_TRUE(rects->impl().rectsPerFrame());
+		fixed->impl().setRectsPerFrame(false);
+		int detections = 0;
+		uint64_t skipped = 0;
+		expectSameOnPets(*fixed, *rects, 10, detections, skipped);
+		ASSERT_FALSE(::testing::Test::HasFatalFailure());
+		const long computed = rects->impl().pyramid.rectsComputed;
+		std::printf("PETS frames 1-10, placed levels%s: %d detections either way; %llu sparse "
+			    "windows skipped; %ld rectangles computed\n",
+			    gate ? ", static gate" : "", detections, (unsigned long long)skipped, computed);
+		EXPECT_GT(detections, 0);
+		if (gate) {
+			EXPECT_GT(skipped, 0u);
+		} else {
+			EXPECT_EQ(skipped, 0u);
+		}
+		EXPECT_GT(computed, 0); // the rectangle path ran
+		EXPECT_EQ(fixed->impl().pyramid.rectsComputed, 0);
+	}
 }
 
 TEST(CalibratedDetector, PetsPlacedPyramidComputesLessFindsTheSamePeople)

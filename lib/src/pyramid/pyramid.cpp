@@ -269,8 +269,8 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 	for (int i = 0; i < n; i++) {
 		const PyramidLevel &l = scales_.levels[i];
 		LevelRows &r = rows_[i];
-		r.wanted = levelRows ? levelRows[i].clipped(l.height) : RowBand{ 0, l.height };
-		const RowBand raw = r.wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
+		const RowBand wanted = levelRows ? levelRows[i].clipped(l.height) : RowBand{ 0, l.height };
+		const RowBand raw = wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
 		r.raw.add(raw);
 		if (!l.computed && !raw.empty()) {
 			// Which source rows the taps read does not depend on their gain.
@@ -488,7 +488,6 @@ Status Pyramid::ensureRects(FrameInput &input, const int *levels, const LevelRec
 		if (raw.empty())
 			continue;
 		// level() checks its rows against these.
-		rows_[i].wanted.add(rects[k].rows.clipped(l.height));
 		rows_[i].raw.add(raw.rows);
 		if (!l.computed) {
 			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);

@@ -100,8 +100,7 @@ public:
 private:
 	// The rows each stage must produce for the bands the classifier needs.
 	struct LevelRows {
-		RowBand wanted; // smoothed, padded rows the classifier reads
-		RowBand raw;    // raw channel rows (wanted plus the smoothing's reach)
+		RowBand raw;    // raw channel rows (those the classifier reads plus the smoothing's reach)
 		RowBand chan;   // computed levels: rows of the level's LUV image fed to the channels
 		RowBand luv;    // computed levels: rows of its LUV image that must exist (chan, and
 				// for the half-size image the rows smaller octaves resample)
