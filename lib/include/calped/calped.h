@@ -7,3 +7,4 @@
 #include <calped/image.h>
 #include <calped/model.h>
 #include <calped/status.h>
+#include <calped/version.h>
