@@ -145,9 +145,9 @@ int main(int argc, char **argv)
 	cfg.maxWidth = frames[0].width;
 	cfg.maxHeight = frames[0].height;
 	cfg.resize = resize;
-	cfg.resizeInPyramid = resizeInPyramid;
-	cfg.calibratedPyramid = calibratedPyramid;
-	cfg.staticRejection.enabled = rejectStatic; // fixed camera: frames must be consecutive
+	cfg.resizeAt = resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
+	if (rejectStatic) // fixed camera: frames must be consecutive
+		cfg.staticRejection = StaticRejection();
 	CameraModel camera;
 	if (!calibPath.empty()) {
 		std::vector<uint8_t> text;
@@ -163,8 +163,12 @@ int main(int argc, char **argv)
 		}
 		cfg.camera = &camera;
 	}
-	if (calibrated)
-		cfg.method = DetectionMethod::Calibrated;
+	cfg.method = calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;
+	if (calibrated) {
+		CalibratedSettings cal;
+		cal.levels = calibratedPyramid ? PyramidLevels::Placed : PyramidLevels::Toolbox;
+		cfg.calibrated = cal;
+	}
 	std::unique_ptr<Detector> det;
 	st = Detector::create(model, cfg, det);
 	if (!st.ok()) {

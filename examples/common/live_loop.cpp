@@ -82,13 +82,18 @@ bool createDetector(const LiveOptions &options, int width, int height, DetectorS
 	config.maxWidth = width;
 	config.maxHeight = height;
 	config.resize = options.resize;
-	config.resizeInPyramid = options.resizeInPyramid;
-	config.calibratedPyramid = options.calibratedPyramid;
-	config.staticRejection.enabled = options.rejectStatic;
+	config.resizeAt = options.resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
+	if (options.rejectStatic)
+		config.staticRejection = StaticRejection();
 	config.camera = setup.hasCamera ? &setup.camera : nullptr;
 	config.method = options.calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;
-	config.minPersonHeight = options.minHeight;
-	config.maxPersonHeight = options.maxHeight;
+	if (options.calibrated) {
+		CalibratedSettings cal;
+		cal.levels = options.calibratedPyramid ? PyramidLevels::Placed : PyramidLevels::Toolbox;
+		cal.minPersonHeight = options.minHeight;
+		cal.maxPersonHeight = options.maxHeight;
+		config.calibrated = cal;
+	}
 	const Status st = Detector::create(setup.model, config, setup.detector);
 	if (!st.ok()) {
 		error = "cannot set up the detector for " + std::to_string(width) + "x" +

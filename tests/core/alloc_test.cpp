@@ -11,7 +11,7 @@
 #include <calped/calped.h>
 
 #include "common/alloc_counter.h"
-#include "detect/detector_impl.h"
+#include "detect/detector_internals.h"
 #include "pixel_formats.h"
 #include "synthetic.h"
 #include "test_data.h"
@@ -76,7 +76,7 @@ TEST(BoundedMemory, DetectAllocatesNothingSynthetic)
 		cfg.maxWidth = 320;
 		cfg.maxHeight = 240;
 		cfg.resize = std::fabs(resize);
-		cfg.resizeInPyramid = resize < 0;
+		cfg.resizeAt = resize < 0 ? ResizeAt::Pyramid : ResizeAt::Frame;
 		cfg.cascadeThreshold = -10.0f; // let many windows through, to exercise NMS
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(model, cfg, det).ok());
@@ -91,7 +91,7 @@ TEST(BoundedMemory, DetectAllocatesNothingSynthetic)
 		std::vector<std::vector<uint8_t>> tooBig = { test::randomImage(9, 400, 300) };
 		EXPECT_EQ(allocationsDuring(*det, tooBig, 400, 300, &detections), 0) << "resize " << resize;
 		std::printf("resize %.1f%s: %d detections over the frames, 0 allocations\n", cfg.resize,
-			    cfg.resizeInPyramid ? " in the pyramid" : "", detections);
+			    cfg.resizeAt == ResizeAt::Pyramid ? " in the pyramid" : "", detections);
 		EXPECT_GT(detections, 0);
 	}
 }
@@ -104,8 +104,8 @@ TEST(BoundedMemory, StaticRejectionAllocatesNothingAndDropsAStaticScene)
 	cfg.maxWidth = 320;
 	cfg.maxHeight = 240;
 	cfg.cascadeThreshold = -10.0f;
-	cfg.staticRejection.enabled = true;
-	cfg.staticRejection.warmupFrames = 2;
+	cfg.staticRejection = StaticRejection();
+	cfg.staticRejection->warmupFrames = 2;
 	std::unique_ptr<Detector> det;
 	ASSERT_TRUE(Detector::create(test::randomModel(7, 512), cfg, det).ok());
 	const std::vector<uint8_t> rgb = test::randomImage(3, 320, 240);
@@ -139,13 +139,17 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 	cfg.camera = &camera;
 	cfg.cascadeThreshold = -10.0f;
 	// The resized frame, the resize inside the pyramid, levels placed among the needed
-	// ones (DetectorConfig::calibratedPyramid, which needs the resize in the pyramid), and
-	// these with the static scene's gate of the sparse grid.
+	// ones (PyramidLevels::Placed, which needs the resize in the pyramid), and these with
+	// the static scene's gate of the sparse grid.
 	for (int variant = 0; variant < 4; variant++) {
-		cfg.resizeInPyramid = variant > 0;
-		cfg.calibratedPyramid = variant >= 2;
-		cfg.staticRejection.enabled = variant == 3;
-		cfg.staticRejection.warmupFrames = 1;
+		cfg.resizeAt = variant > 0 ? ResizeAt::Pyramid : ResizeAt::Frame;
+		cfg.calibrated = CalibratedSettings();
+		cfg.calibrated->levels = variant >= 2 ? PyramidLevels::Placed : PyramidLevels::Toolbox;
+		cfg.staticRejection.reset();
+		if (variant == 3) {
+			cfg.staticRejection = StaticRejection();
+			cfg.staticRejection->warmupFrames = 1;
+		}
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(test::randomModel(7, 512), cfg, det).ok());
 		std::vector<std::vector<uint8_t>> frames;
@@ -155,15 +159,15 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 		EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0);
 		std::printf("calibrated, resize 2%s%s%s: %d detections, %llu windows in the last frame, "
 			    "0 allocations\n",
-			    cfg.resizeInPyramid ? " in the pyramid" : "",
-			    cfg.calibratedPyramid ? ", placed levels" : "",
-			    cfg.staticRejection.enabled ? ", static gate" : "", detections,
+			    cfg.resizeAt == ResizeAt::Pyramid ? " in the pyramid" : "",
+			    variant >= 2 ? ", placed levels" : "",
+			    cfg.staticRejection ? ", static gate" : "", detections,
 			    (unsigned long long)det->lastStats().windows);
 		EXPECT_GT(det->lastStats().windows, 0u);
 		// Placed levels are computed in rectangles around what each pass reads
 		// (Pyramid::ensureRects): that path ran in these frames.
-		if (cfg.calibratedPyramid) {
-			EXPECT_GT(det->impl().pyramid.rectsComputed, 0);
+		if (variant >= 2) {
+			EXPECT_GT(DetectorInternals::of(*det).pyramid.rectsComputed, 0);
 		}
 	}
 }
@@ -206,7 +210,7 @@ TEST(BoundedMemory, EveryPixelFormatAllocatesNothing)
 		cfg.maxWidth = 320;
 		cfg.maxHeight = 240;
 		cfg.resize = std::fabs(resize);
-		cfg.resizeInPyramid = resize < 0;
+		cfg.resizeAt = resize < 0 ? ResizeAt::Pyramid : ResizeAt::Frame;
 		cfg.cascadeThreshold = -10.0f;
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(model, cfg, det).ok());

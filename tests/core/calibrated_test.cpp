@@ -9,8 +9,8 @@
 
 #include <calped/calped.h>
 
-#include "detect/calibrated_plan.h"
-#include "detect/detector_impl.h"
+#include "search/calibrated_plan.h"
+#include "detect/detector_internals.h"
 #include "synthetic.h"
 #include "test_data.h"
 
@@ -57,105 +57,6 @@ CameraModel groundCamera(double height, double downDeg)
 
 } // namespace
 
-TEST(CalibratedScales, ThesisWorkedExample)
-{
-	// 1000x800 image, principal row 465.67: at the bottom row a 2 m person is 333.3 px
-	// tall, so a 100-pixel window needs the image at 100 / 334 = 0.2994 (the thesis's 0.3).
-	const CameraModel camera = levelCamera(1000, 500, 799 - 1000.0 / 3);
-	const double smallest = smallestNecessaryScale(camera, 1000, 800, 100, 2.0);
-	std::printf("smallest necessary scale %.4f\n", smallest);
-	EXPECT_NEAR(smallest, 100.0 / 334, 1e-9);
-	double s[16];
-	const int n = thesisScaleList(smallest, 4, s, 16);
-	const double expected[] = { 1.0, 0.875, 0.75, 0.625, 0.5, 0.4375, 0.375, 0.3125 };
-	ASSERT_EQ(n, 8);
-	for (int i = 0; i < n; i++)
-		EXPECT_DOUBLE_EQ(s[i], expected[i]) << "scale " << i;
-}
-
-TEST(CalibratedScales, NoGroundNoScale)
-{
-	// Looking up at the sky: the bottom corners see no ground.
-	Eigen::Matrix3d K;
-	K << 800, 0, 320, 0, 800, 900, 0, 0, 1; // principal row far below the image
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
-	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
-	EXPECT_TRUE(std::isnan(smallestNecessaryScale(camera, 640, 480, 100, 2.0)));
-}
-
-TEST(CalibratedPlan, EveryPlannedWindowHasAPlausibleHeight)
-{
-	const CameraModel camera = levelCamera(600, 320, 120);
-	DetectorConfig cfg;
-	cfg.maxWidth = 640;
-	cfg.maxHeight = 480;
-	cfg.method = DetectionMethod::Calibrated;
-	cfg.camera = &camera;
-	std::unique_ptr<Detector> det;
-	const Status st = Detector::create(test::randomModel(1), cfg, det);
-	ASSERT_TRUE(st.ok()) << st.message();
-
-	// Rebuild the plan by hand and check both ways on every window of every level.
-	DetectorImpl &impl = det->impl();
-	ScaleList scales;
-	ASSERT_TRUE(impl.pyramid.scalesFor(640, 480, scales).ok());
-	CalibratedPlan plan;
-	ModelParams p;
-	ASSERT_TRUE(plan.build(camera, p, scales, 1.0, impl.pyramid.padCellsH(), impl.pyramid.padCellsW(),
-			       impl.classifier, 1.4, 2.2).ok());
-	WindowGeometry g;
-	g.shiftH = (p.modelDsPadH - double(p.modelDsH)) / 2 - p.padH;
-	g.shiftW = (p.modelDsPadW - double(p.modelDsW)) / 2 - p.padW;
-	size_t planned = 0, all = 0;
-	int levels = 0;
-	for (int i = 0; i < scales.count; i++) {
-		const PyramidLevel &l = scales.levels[i];
-		int rows, cols;
-		impl.classifier.windowGrid(l.height + 2 * impl.pyramid.padCellsH(),
-					   l.width + 2 * impl.pyramid.padCellsW(), rows, cols);
-		std::vector<uint8_t> inPlan(size_t(rows) * cols, 0);
-		for (size_t k = 0; k < plan.windowCount(i); k++) {
-			const uint32_t w = plan.windows(i)[k];
-			inPlan[size_t(w >> 16) * cols + (w & 0xFFFF)] = 1;
-		}
-		for (int r = 0; r < rows; r++)
-			for (int c = 0; c < cols; c++) {
-				double x, y, bw, bh;
-				windowBox(p, l, g, r, c, x, y, bw, bh);
-				const double h = camera.boxWorldHeight(Eigen::Vector2d(x + bw / 2, y + bh),
-								       Eigen::Vector2d(x + bw / 2, y));
-				const bool plausible = h >= 1.4 && h <= 2.2;
-				ASSERT_EQ(plausible, inPlan[size_t(r) * cols + c] == 1)
-					<< "level " << i << " window " << r << "," << c << " height " << h;
-				ASSERT_EQ(plausible, plan.plausible(i, r, c));
-			}
-		// Each column's plausible row range is tight: its ends are plausible windows and
-		// nothing plausible lies outside it.
-		for (int c = 0; c < cols; c++) {
-			int first, last;
-			plan.plausibleRows(i, c, first, last);
-			for (int r = 0; r < rows; r++) {
-				if (r < first || r > last) {
-					ASSERT_FALSE(plan.plausible(i, r, c)) << "level " << i << " " << r << "," << c;
-				}
-			}
-			if (first <= last) {
-				EXPECT_TRUE(plan.plausible(i, first, c));
-				EXPECT_TRUE(plan.plausible(i, last, c));
-			}
-		}
-		planned += plan.windowCount(i);
-		all += size_t(rows) * cols;
-		levels += plan.levelNeeded(i) ? 1 : 0;
-	}
-	std::printf("synthetic level camera 2 m high: %d of %d levels, %zu of %zu windows\n", levels,
-		    scales.count, planned, all);
-	EXPECT_GT(planned, 0u);
-	EXPECT_LT(planned, all / 2);
-}
-
 TEST(CalibratedDetector, RejectsMissingCameraAndOtherFrameSizes)
 {
 	DetectorConfig cfg;
@@ -166,11 +67,12 @@ TEST(CalibratedDetector, RejectsMissingCameraAndOtherFrameSizes)
 	EXPECT_EQ(Detector::create(test::randomModel(1), cfg, det).code(), ErrorCode::InvalidArgument);
 	const CameraModel camera = levelCamera(600, 320, 120);
 	cfg.camera = &camera;
-	cfg.minPersonHeight = 2.5;
-	cfg.maxPersonHeight = 1.0;
+	cfg.calibrated = CalibratedSettings();
+	cfg.calibrated->minPersonHeight = 2.5;
+	cfg.calibrated->maxPersonHeight = 1.0;
 	EXPECT_EQ(Detector::create(test::randomModel(1), cfg, det).code(), ErrorCode::InvalidArgument);
-	cfg.minPersonHeight = 1.4;
-	cfg.maxPersonHeight = 2.2;
+	cfg.calibrated->minPersonHeight = 1.4;
+	cfg.calibrated->maxPersonHeight = 2.2;
 	ASSERT_TRUE(Detector::create(test::randomModel(1), cfg, det).ok());
 	const auto img = test::randomImage(1, 320, 240);
 	Detections d;
@@ -199,12 +101,11 @@ TEST(CalibratedDetector, StaticGateSkipsSparseWindowsWhereNothingMoves)
 		cfg.maxHeight = 480;
 		cfg.camera = &camera;
 		cfg.method = DetectionMethod::Calibrated;
-		cfg.calibratedPyramid = true;
-		cfg.staticRejection.enabled = true;
-		cfg.staticRejection.warmupFrames = 2;
-		cfg.staticRejection.gateSparse = gate == 1;
+		cfg.staticRejection = StaticRejection();
+		cfg.staticRejection->warmupFrames = 2;
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(model, cfg, det).ok());
+		DetectorInternals::of(*det).calibrated.setStaticGate(gate == 1);
 		Detections d;
 		for (int f = 0; f < 2; f++) { // warm-up: every sparse window
 			ASSERT_TRUE(det->detect(ImageView::rgb8(ground.data(), 640, 480), d).ok());
@@ -248,16 +149,25 @@ bool loadPets(Model &model, CameraModel &camera)
 }
 
 // PETS view 1 at resize 2 with this camera: the frame resized first, or (inPyramid) in
-// the pyramid.
+// the pyramid; the generic method.
 DetectorConfig petsConfig(const CameraModel &camera, bool inPyramid)
 {
 	DetectorConfig cfg;
 	cfg.maxWidth = 768;
 	cfg.maxHeight = 576;
 	cfg.resize = 2.0;
-	cfg.resizeInPyramid = inPyramid;
+	cfg.resizeAt = inPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
 	cfg.camera = &camera;
+	cfg.method = DetectionMethod::Generic;
 	return cfg;
+}
+
+// The calibrated method with these pyramid levels, the other settings their defaults.
+CalibratedSettings calibratedWith(PyramidLevels levels)
+{
+	CalibratedSettings s;
+	s.levels = levels;
+	return s;
 }
 
 TEST(CalibratedDetector, PetsFewerWindowsSameDetections)
@@ -272,7 +182,8 @@ TEST(CalibratedDetector, PetsFewerWindowsSameDetections)
 	DetectorConfig cfg = petsConfig(camera, false);
 	ASSERT_TRUE(Detector::create(model, cfg, generic).ok());
 	cfg.method = DetectionMethod::Calibrated;
-	cfg.boxVoting = false; // compares the windows themselves (voting moves boxes)
+	cfg.calibrated = calibratedWith(PyramidLevels::Toolbox);
+	cfg.calibrated->boxVoting = false; // compares the windows themselves (voting moves boxes)
 	ASSERT_TRUE(Detector::create(model, cfg, calibrated).ok());
 
 	uint64_t windowsGeneric = 0, windowsCalibrated = 0;
@@ -322,19 +233,21 @@ TEST(CalibratedDetector, PlacedPyramidNeedsCalibratedMethodAndNoFrameResize)
 	cfg.maxWidth = 640;
 	cfg.maxHeight = 480;
 	cfg.camera = &camera;
-	cfg.calibratedPyramid = true;
+	cfg.method = DetectionMethod::Generic;
+	cfg.calibrated = calibratedWith(PyramidLevels::Placed);
 	std::unique_ptr<Detector> det;
-	Status st = Detector::create(test::randomModel(1), cfg, det); // generic method
+	Status st = Detector::create(test::randomModel(1), cfg, det);
 	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
-	EXPECT_NE(std::string(st.message()).find("calibrated method"), std::string::npos) << st.message();
+	EXPECT_NE(std::string(st.message()).find("method is generic"), std::string::npos) << st.message();
 	cfg.method = DetectionMethod::Calibrated;
 	cfg.resize = 2.0;
+	cfg.resizeAt = ResizeAt::Frame;
 	st = Detector::create(test::randomModel(1), cfg, det); // the frame would be resized
 	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
-	EXPECT_NE(std::string(st.message()).find("resizeInPyramid"), std::string::npos) << st.message();
-	cfg.resizeInPyramid = true;
+	EXPECT_NE(std::string(st.message()).find("resizeAt Pyramid"), std::string::npos) << st.message();
+	cfg.resizeAt = ResizeAt::Pyramid;
 	EXPECT_TRUE(Detector::create(test::randomModel(1), cfg, det).ok());
-	cfg.placedLevelReach = 0;
+	cfg.calibrated->placedLevelReach = 0;
 	st = Detector::create(test::randomModel(1), cfg, det);
 	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
 	EXPECT_NE(std::string(st.message()).find("placedLevelReach"), std::string::npos) << st.message();
@@ -407,20 +320,21 @@ TEST(CalibratedDetector, PetsRectanglesGiveTheSameDetections)
 	for (bool gate : { false, true }) {
 		SCOPED_TRACE(gate ? "static gate" : "no gate");
 		DetectorConfig cfg = petsConfig(camera, true);
-		cfg.calibratedPyramid = true;
 		cfg.method = DetectionMethod::Calibrated;
-		cfg.staticRejection.enabled = gate;
-		cfg.staticRejection.warmupFrames = 3;
+		if (gate) {
+			cfg.staticRejection = StaticRejection();
+			cfg.staticRejection->warmupFrames = 3;
+		}
 		std::unique_ptr<Detector> fixed, rects;
 		ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
 		ASSERT_TRUE(Detector::create(model, cfg, rects).ok());
-		ASSERT_TRUE(rects->impl().rectsPerFrame());
-		fixed->impl().setRectsPerFrame(false);
+		ASSERT_TRUE(DetectorInternals::of(*rects).calibrated.rectsPerFrame());
+		DetectorInternals::of(*fixed).calibrated.setRectsPerFrame(false);
 		int detections = 0;
 		uint64_t skipped = 0;
 		expectSameOnPets(*fixed, *rects, 10, detections, skipped);
 		ASSERT_FALSE(::testing::Test::HasFatalFailure());
-		const long computed = rects->impl().pyramid.rectsComputed;
+		const long computed = DetectorInternals::of(*rects).pyramid.rectsComputed;
 		std::printf("PETS frames 1-10, placed levels%s: %d detections either way; %llu sparse "
 			    "windows skipped; %ld rectangles computed\n",
 			    gate ? ", static gate" : "", detections, (unsigned long long)skipped, computed);
@@ -431,7 +345,7 @@ TEST(CalibratedDetector, PetsRectanglesGiveTheSameDetections)
 			EXPECT_EQ(skipped, 0u);
 		}
 		EXPECT_GT(computed, 0); // the rectangle path ran
-		EXPECT_EQ(fixed->impl().pyramid.rectsComputed, 0);
+		EXPECT_EQ(DetectorInternals::of(*fixed).pyramid.rectsComputed, 0);
 	}
 }
 
@@ -445,9 +359,10 @@ TEST(CalibratedDetector, PetsPlacedPyramidComputesLessFindsTheSamePeople)
 
 	DetectorConfig cfg = petsConfig(camera, true);
 	cfg.method = DetectionMethod::Calibrated;
+	cfg.calibrated = calibratedWith(PyramidLevels::Toolbox);
 	std::unique_ptr<Detector> octaves, placed;
 	ASSERT_TRUE(Detector::create(model, cfg, octaves).ok());
-	cfg.calibratedPyramid = true;
+	cfg.calibrated = calibratedWith(PyramidLevels::Placed);
 	ASSERT_TRUE(Detector::create(model, cfg, placed).ok());
 
 	int totalO = 0, totalP = 0, foundO = 0, foundP = 0, computedO = 0, computedP = 0;
@@ -500,7 +415,9 @@ TEST(CalibratedDetector, LowCamerasStayCheaperThanGeneric)
 				cfg.camera = &camera;
 				cfg.cascadeThreshold = -2.0f;
 				cfg.method = m ? DetectionMethod::Calibrated : DetectionMethod::Generic;
-				cfg.calibratedPyramid = m == 2;
+				if (m)
+					cfg.calibrated = calibratedWith(m == 2 ? PyramidLevels::Placed
+									       : PyramidLevels::Toolbox);
 				std::unique_ptr<Detector> det;
 				ASSERT_TRUE(Detector::create(model, cfg, det).ok());
 				for (uint32_t f = 0; f < 3; f++) {

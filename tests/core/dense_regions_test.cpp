@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "detect/dense_regions.h"
+#include "search/dense_regions.h"
 
 namespace calped {
 namespace {

@@ -97,7 +97,7 @@ void runParity(const char *refFile, double resize, double minMatched, bool resiz
 	cfg.maxWidth = 768;
 	cfg.maxHeight = 576;
 	cfg.resize = resize;
-	cfg.resizeInPyramid = resizeInPyramid;
+	cfg.resizeAt = resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
 	std::unique_ptr<Detector> det;
 	st = Detector::create(model, cfg, det);
 	ASSERT_TRUE(st.ok()) << st.message();

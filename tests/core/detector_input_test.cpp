@@ -237,8 +237,7 @@ TEST(DetectorInput, BadConfigurations)
 	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);
 	cfg.resize = 100;
 	EXPECT_EQ(Detector::create(model, cfg, det).code(), ErrorCode::InvalidArgument);
-	cfg.resize = 0.5; // the pyramid only upscales
-	cfg.resizeInPyramid = true;
+	cfg.resize = 0.5; // the pyramid only upscales (the default resizeAt)
 	const Status down = Detector::create(model, cfg, det);
 	EXPECT_EQ(down.code(), ErrorCode::InvalidArgument);
 	EXPECT_NE(std::string(down.message()).find("pyramid"), std::string::npos) << down.message();
@@ -257,8 +256,8 @@ TEST(DetectorInput, CandidateOverflowIsCounted)
 	cfg.maxWidth = 320;
 	cfg.maxHeight = 240;
 	cfg.maxCandidates = 5;
-	cfg.cascadeThreshold = -1e6f; // every window passes
-	cfg.disableNms = true;
+	cfg.cascadeThreshold = -30000.0f; // every window passes
+	cfg.nms = false;
 	std::unique_ptr<Detector> det;
 	ASSERT_TRUE(Detector::create(test::randomModel(3), cfg, det).ok());
 	const auto img = test::randomImage(1, 320, 240);

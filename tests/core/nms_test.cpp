@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "detect/nms.h"
+#include "suppress/nms.h"
 
 namespace calped {
 namespace {

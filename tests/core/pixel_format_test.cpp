@@ -11,7 +11,7 @@
 
 #include <calped/detector.h>
 
-#include "channels/frame_input.h"
+#include "input/frame_input.h"
 #include "pixel_formats.h"
 #include "synthetic.h"
 #include "test_data.h"

@@ -298,9 +298,6 @@ TEST(PyramidBands, PlacementIsCheckedAndSizedForTheMaximumFrame)
 	// Another frame size keeps the toolbox's octaves.
 	ASSERT_TRUE(pyr.build(rgb.data(), 3 * 200, 180, 150).ok());
 	EXPECT_LT(pyr.computedCount, pyr.scales().count);
-	EXPECT_TRUE(pyr.placeComputedLevels(nullptr, 0).ok());
-	ASSERT_TRUE(pyr.build(rgb.data(), 3 * 200, 200, 150).ok());
-	EXPECT_LT(pyr.computedCount, scales.count);
 }
 
 TEST(PyramidBands, ColumnRangesEqualTheFullLevel)

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "channels/frame_input.h"
-#include "detect/static_scene.h"
+#include "input/frame_input.h"
+#include "suppress/static_scene.h"
 
 namespace calped {
 namespace {
@@ -42,7 +42,6 @@ protected:
 	void SetUp() override
 	{
 		ASSERT_TRUE(input_.init(kW, kH, false).ok());
-		settings_.enabled = true;
 		settings_.warmupFrames = 5;
 		ASSERT_TRUE(scene_.init(kW, kH, settings_).ok());
 	}
@@ -126,7 +125,6 @@ TEST(StaticSceneCells, GreyIsTheCellMeanOfRPlusTwoGPlusBOverFour)
 	ASSERT_TRUE(input.init(w, h, false).ok());
 	StaticScene scene;
 	StaticRejection settings;
-	settings.enabled = true;
 	ASSERT_TRUE(scene.init(w, h, settings).ok());
 	input.begin(ImageView::rgb8(rgb.data(), w, h));
 	scene.observe(input);
@@ -163,7 +161,6 @@ TEST(StaticSceneCells, ForegroundCountsAreThoseOfTheCells)
 	ASSERT_TRUE(input.init(w, h, false).ok());
 	StaticScene scene;
 	StaticRejection settings;
-	settings.enabled = true;
 	settings.difference = 20;
 	ASSERT_TRUE(scene.init(w, h, settings).ok());
 	const std::vector<uint8_t> first = randomFrame(), second = randomFrame();
@@ -198,24 +195,6 @@ TEST(StaticSceneCells, ForegroundCountsAreThoseOfTheCells)
 	EXPECT_GT(anyDiffering, 100); // rectangles with some cells differing and some not
 }
 
-TEST(StaticSceneSettings, BadSettingsAreNamed)
-{
-	StaticScene scene;
-	StaticRejection s;
-	s.difference = 0;
-	Status st = scene.init(64, 64, s);
-	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
-	EXPECT_NE(std::string(st.message()).find("difference"), std::string::npos) << st.message();
-	s = StaticRejection();
-	s.minForeground = 1.5f;
-	st = scene.init(64, 64, s);
-	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
-	EXPECT_NE(std::string(st.message()).find("minForeground"), std::string::npos) << st.message();
-	s = StaticRejection();
-	s.warmupFrames = 0;
-	EXPECT_EQ(scene.init(64, 64, s).code(), ErrorCode::InvalidArgument);
-	EXPECT_TRUE(scene.init(64, 64, StaticRejection()).ok());
-}
 
 } // namespace
 } // namespace calped

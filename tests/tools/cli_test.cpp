@@ -430,7 +430,7 @@ TEST_F(CliRunTest, PlacedPyramidIsForTheCalibratedMethod)
 	// calibrated method it is refused by name, with a one-line error.
 	ProcessResult r = detect({ "--model", model_, "--calibrated-pyramid", path("frames/a.png") });
 	expectOneLineError(r, 1);
-	EXPECT_NE(r.err.find("calibrated method"), std::string::npos) << r.err;
+	EXPECT_NE(r.err.find("method is generic"), std::string::npos) << r.err;
 }
 
 TEST_F(CliRunTest, OverlaysEveryKthFrameAsRgb)

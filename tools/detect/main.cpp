@@ -80,11 +80,10 @@ int run(const Options &opt)
 	config.maxWidth = maxW;
 	config.maxHeight = maxH;
 	config.resize = opt.resize;
-	config.resizeInPyramid = opt.resizeInPyramid;
-	config.calibratedPyramid = opt.calibratedPyramid;
-	config.staticRejection.enabled = opt.rejectStatic;
-	config.disableNms = opt.noNms;
-	config.boxVoting = !opt.noBoxVoting;
+	config.resizeAt = opt.resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
+	if (opt.rejectStatic)
+		config.staticRejection = StaticRejection();
+	config.nms = !opt.noNms;
 	CameraModel camera;
 	if (!opt.calibPath.empty()) {
 		std::vector<uint8_t> text;
@@ -97,8 +96,15 @@ int run(const Options &opt)
 		config.camera = &camera;
 	}
 	config.method = opt.calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;
-	config.minPersonHeight = opt.minHeight;
-	config.maxPersonHeight = opt.maxHeight;
+	if (opt.calibrated || opt.calibratedPyramid) { // refused with the generic method
+		CalibratedSettings cal;
+		cal.levels = opt.calibratedPyramid ? PyramidLevels::Placed : PyramidLevels::Toolbox;
+		cal.minPersonHeight = opt.minHeight;
+		cal.maxPersonHeight = opt.maxHeight;
+		cal.boxVoting = !opt.noBoxVoting && !opt.noNms;
+		cal.scoreRatio = !opt.noNms;
+		config.calibrated = cal;
+	}
 	std::unique_ptr<Detector> detector;
 	st = Detector::create(model, config, detector);
 	if (!st.ok())

@@ -23,7 +23,7 @@ protected:
 		config.maxWidth = setup.maxWidth;
 		config.maxHeight = setup.maxHeight;
 		config.resize = setup.resize;
-		config.resizeInPyramid = setup.resizeInPyramid;
+		config.resizeAt = setup.resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
 		Status st = Detector::create(*setup.model, config, detector_);
 		if (!st.ok()) {
 			error = std::string("cannot set up the detector: ") + st.message();
@@ -43,7 +43,9 @@ public:
 			   std::string &error)
 	{
 		std::unique_ptr<GenericMethod> m(new GenericMethod);
-		if (!m->setUp(setup, DetectorConfig(), error))
+		DetectorConfig config;
+		config.method = DetectionMethod::Generic;
+		if (!m->setUp(setup, config, error))
 			return false;
 		out = std::move(m);
 		return true;
@@ -85,8 +87,11 @@ private:
 		DetectorConfig config;
 		config.method = DetectionMethod::Calibrated;
 		config.camera = &m->camera_;
-		config.staticRejection.enabled = rejectStatic;
-		config.calibratedPyramid = setup.calibratedPyramid;
+		if (rejectStatic)
+			config.staticRejection = StaticRejection();
+		CalibratedSettings cal;
+		cal.levels = setup.calibratedPyramid ? PyramidLevels::Placed : PyramidLevels::Toolbox;
+		config.calibrated = cal;
 		if (!m->setUp(setup, config, error))
 			return false;
 		out = std::move(m);

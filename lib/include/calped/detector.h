@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// The ACF pedestrian detector, generic mode (Dollár's sliding window over the fast
-// feature pyramid). All memory is allocated by create(); detect() allocates nothing.
+// The ACF pedestrian detector: Dollár's sliding window over the fast feature pyramid
+// (generic method) or the thesis's calibrated method. All memory is allocated by
+// create(); detect() allocates nothing. One Detector is for one thread at a time;
+// several Detectors may share one Model and run on separate threads.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include <calped/image.h>
 #include <calped/model.h>
@@ -16,8 +19,51 @@ class CameraModel;
 
 // Generic: Dollár's detector, every window of every pyramid level. Calibrated: the
 // thesis's method (chapter 3): only pyramid levels and windows where a person of
-// plausible world height can stand, given the camera's calibration.
-enum class DetectionMethod { Generic, Calibrated };
+// plausible world height can stand, given the camera's calibration. Auto, the default:
+// calibrated when the configuration has a camera, generic without one.
+enum class DetectionMethod { Auto, Generic, Calibrated };
+
+// Where the input resize happens. Pyramid, the default: colour is converted at the input
+// size and every computed level is resampled from it, as the toolbox does with nOctUp
+// (resize 2 is its nOctUp = 1 exactly); no upscaled frame is made, and it is faster. Frame:
+// the frame itself is resampled first, as the toolbox's imResample and the thesis do; the
+// only choice for resizes below 1. The channels of the two differ slightly (colour
+// conversion and resampling in the other order); docs/calibrated.md has both measured.
+enum class ResizeAt { Pyramid, Frame };
+
+// Which pyramid levels have their channels computed (the others are approximated from
+// the nearest computed one). Toolbox: one per octave of the frame, as Dollár's toolbox.
+// Placed (calibrated method only, the default there): levels chosen among those the
+// camera needs, each approximated level at most placedLevelReach levels from its
+// computed one, placed where the computed rows cost least; much less work when the
+// needed levels start below an octave, detections slightly different.
+enum class PyramidLevels { Placed, Toolbox };
+
+// The calibrated method's settings (thesis chapter 3, and what calped adds).
+struct CalibratedSettings {
+	// Plausible pedestrian heights, metres: 0 < min <= max < 10.
+	double minPersonHeight = 1.4;
+	double maxPersonHeight = 2.2;
+	// Thesis 3.2: a sparse grid of windows first, then every window in dense regions
+	// around its detections. false evaluates every plausible window instead.
+	bool sparseDense = true;
+	// Thesis 3.4 (sparseDense): a dense region is removed after this many frames in a row
+	// without a detection inside (1 reproduces the thesis); at most maxDenseRegions
+	// regions, those beyond are not created and are counted (FrameStats).
+	int denseRegionPersistence = 1;
+	int maxDenseRegions = 256;
+	// Thesis 3.3, the second suppression step: after NMS, a box overlapping a better one
+	// by more than the ratio of their scores is dropped.
+	bool scoreRatio = true;
+	// Beyond the thesis: after suppression, each box moves to the score^4-weighted mean of
+	// the windows overlapping it (IoU > 0.6), which places it better than the single best
+	// window (docs/calibrated.md). false: the thesis's boxes.
+	bool boxVoting = true;
+	PyramidLevels levels = PyramidLevels::Placed;
+	// Placed levels: how far approximations may reach, in pyramid levels (1..16; 5 is 5/8
+	// of an octave for the INRIA model, whose toolbox pyramid reaches 4 down and 3 up).
+	int placedLevelReach = 5;
+};
 
 // Beyond the thesis, for fixed cameras: drop detections on static scene structure (a
 // tripod, a sign or a post that looks like a person and is found in the same place frame
@@ -26,76 +72,50 @@ enum class DetectionMethod { Generic, Calibrated };
 // it sees) and drops a detection whose box has fewer than minForeground of its cells
 // differing from it by more than `difference` grey levels. A person who stands still
 // long enough fades into that background too (at one grey level per frame); the
-// background starts again when the frame size changes. In the calibrated mode with
-// sparse and dense windows, `gateSparse` also skips, once the background is ready, the
-// sparse windows whose own box has fewer than minForeground of its cells differing:
-// what they could find there would be dropped anyway, and the pyramid is then only
-// needed where something moves. docs/calibrated.md.
+// background starts again when the frame size changes. With the calibrated method's
+// sparse grid, the same test also skips, once the background is ready, the sparse
+// windows whose own box is static: what they could find there would be dropped anyway,
+// and the pyramid is then only needed where something moves. docs/calibrated.md.
 struct StaticRejection {
-	bool enabled = false;
 	int difference = 10;        // grey levels, 1..254
 	float minForeground = 0.1f; // fraction of the box's cells, 0..1
 	int warmupFrames = 50;      // first frames of a background, none dropped (>= 1)
-	bool gateSparse = true;     // calibrated mode: no sparse windows on static scene
 };
 
 struct DetectorConfig {
-	// Largest input frame (before resizing) that detect() will accept.
+	// Largest input frame (before resizing) that detect() will accept, 1..16384.
 	int maxWidth = 1920;
 	int maxHeight = 1080;
-	// Input upscaling factor (the thesis's "resize"): the frame is resampled to
-	// round(size * resize) first, as the toolbox's imResample does; boxes come back in
-	// input pixels. 1.0 means no resampling.
+	// Input scaling factor (the thesis's "resize", 0 < resize <= 8): detection runs on
+	// the frame as if resized to round(size * resize); boxes come back in input pixels.
 	double resize = 1.0;
-	// Do the resize inside the feature pyramid instead (needs resize >= 1): colour is
-	// converted at the input size and every computed level is resampled from it, as the
-	// toolbox does with nOctUp (resize 2 here is its nOctUp = 1 exactly). No upscaled
-	// frame is made and the colour conversion covers 1/resize^2 of the pixels, so it is
-	// faster; the channels differ slightly from the resized frame's (colour conversion
-	// and resampling in the other order). docs/calibrated.md has both measured.
-	bool resizeInPyramid = false;
-	// Capacity for windows that pass the cascade in one frame (before NMS). Excess windows
-	// are dropped and counted in FrameStats::droppedWindows, never silently lost.
+	ResizeAt resizeAt = ResizeAt::Pyramid;
+	// Capacity for windows that pass the cascade in one frame (before NMS), 1..2^24.
+	// Excess windows are dropped and counted in FrameStats::droppedWindows.
 	int maxCandidates = 1 << 16;
 	// Override the model's cascade threshold (NaN keeps the model's).
 	float cascadeThreshold = __builtin_nanf("");
-	// Skip non-maximum suppression (returns every window that passed the cascade).
-	bool disableNms = false;
+	// Non-maximum suppression. false returns every window that passed the cascade (then
+	// the calibrated method's scoreRatio and boxVoting must be off too).
+	bool nms = true;
 
 	// A camera (copied by create()) gives detections their ground position and world
-	// height, and is required by calibrated mode. Its pixels are the input frame's (before
-	// resize): every frame must then be exactly maxWidth x maxHeight.
-	DetectionMethod method = DetectionMethod::Generic;
+	// height, and is what the calibrated method needs. Its pixels are the input frame's
+	// (before resize): every frame must then be exactly maxWidth x maxHeight.
 	const CameraModel *camera = nullptr;
-	// Plausible pedestrian heights, metres (calibrated mode).
-	double minPersonHeight = 1.4;
-	double maxPersonHeight = 2.2;
-	// Thesis 3.2: a sparse grid of windows first, then every window in dense regions around
-	// its detections. false evaluates every plausible window instead.
-	bool sparseDense = true;
-	// Thesis 3.4: a dense region is removed after this many frames in a row without a
-	// detection inside (1 reproduces the thesis).
-	int denseRegionPersistence = 1;
-	// Capacity for dense regions; regions beyond it are not created, and counted.
-	int maxDenseRegions = 256;
-	// Calibrated mode, beyond the thesis: after suppression, each box moves to the
-	// score^4-weighted mean of the windows overlapping it (IoU > 0.6), which places it
-	// better than the single best window (docs/calibrated.md). Off: the thesis's boxes.
-	bool boxVoting = true;
-	// Calibrated mode, beyond the thesis and the toolbox: compute channels at pyramid
-	// levels chosen among the needed ones instead of at octaves of the frame, each
-	// approximated level at most placedLevelReach levels from its computed level, placed
-	// where the row bands cost the fewest pixels. Much less work when the needed levels
-	// start below an octave; the detections differ slightly from the toolbox pyramid's.
-	// Calibrated method only, and no frame resize first (resize 1 or resizeInPyramid).
-	// docs/calibrated.md.
-	bool calibratedPyramid = false;
-	// How far approximations may reach with calibratedPyramid, in pyramid levels (1..16;
-	// 5 is 5/8 of an octave for the INRIA model, whose toolbox pyramid reaches 4 down and 3
-	// up; measured in docs/calibrated.md).
-	int placedLevelReach = 5;
-	// Either method: drop detections on static scene structure (off by default).
-	StaticRejection staticRejection;
+	DetectionMethod method = DetectionMethod::Auto;
+	// The calibrated method's settings; empty means the defaults. Refused with the
+	// generic method.
+	std::optional<CalibratedSettings> calibrated;
+	// Set: static-scene rejection, with these settings (either method; off by default).
+	std::optional<StaticRejection> staticRejection;
+
+	// InvalidArgument naming the first setting that is out of range or meaningless with
+	// the others (e.g. calibrated settings with the generic method); create() calls it
+	// before allocating anything.
+	Status validate() const;
+	// The method that runs: Auto resolved by the camera.
+	DetectionMethod resolvedMethod() const;
 };
 
 // One detection in input-image pixels: top-left corner, size, classifier score. With a
@@ -154,12 +174,12 @@ public:
 	Status detect(const ImageView &image, Detections &out);
 
 	const FrameStats &lastStats() const;
+	// The configuration as validated, method resolved and calibrated settings filled in
+	// when the calibrated method runs.
 	const DetectorConfig &config() const;
 
-	// Internal access for tests and tools that inspect the pyramid.
-	DetectorImpl &impl() { return *impl_; }
-
 private:
+	friend class DetectorInternals; // tests (lib/src/detect/detector_internals.h)
 	Detector() = default;
 	std::unique_ptr<DetectorImpl> impl_;
 };

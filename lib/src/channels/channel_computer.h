@@ -25,7 +25,6 @@ public:
 	void compute(const Plane<const uint16_t> luv[3], int width, int height,
 		     const Plane<uint16_t> out[kChannelCount]);
 
-	const kernels::GradientTables &gradientTables() const { return grad_; }
 
 private:
 	ModelParams params_;

@@ -102,7 +102,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		// Computed levels shrink by 2 per octave: 4/3 of the first one's cells in all,
 		// plus room for the rounding of every level's size.
 		const size_t cells = size_t(maxLevelH_) * maxLevelW_;
-		realStore_.assign(kChannelCount * (cells * 4 / 3 + size_t(kMaxLevels) * (maxLevelH_ + maxLevelW_ + 4)), 0);
+		computedStore_.assign(kChannelCount * (cells * 4 / 3 + size_t(kMaxLevels) * (maxLevelH_ + maxLevelW_ + 4)), 0);
 		approx_.allocate(maxLevelW_, maxLevelH_ * kChannelCount);
 		rowStride_ = maxLevelW_ + 2 * padW_;
 		planeStride_ = rowStride_ * (maxLevelH_ + 2 * padH_);
@@ -210,14 +210,6 @@ Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
 Status Pyramid::placeComputedLevels(const int *source, int count)
 {
 	placedCount_ = 0;
-	if (!source) {
-		try {
-			buildTapCache();
-		} catch (const std::bad_alloc &) {
-			return Status::error(ErrorCode::OutOfMemory, "resampling taps of the pyramid");
-		}
-		return Status::success();
-	}
 	ScaleList scales;
 	Status st = scalesFor(maxWidth_, maxHeight_, scales);
 	if (!st.ok())
@@ -239,8 +231,8 @@ Status Pyramid::placeComputedLevels(const int *source, int count)
 		if (scales.levels[i].computed)
 			need += size_t(kChannelCount) * scales.levels[i].width * scales.levels[i].height;
 	try {
-		if (need > realStore_.size())
-			realStore_.assign(need, 0);
+		if (need > computedStore_.size())
+			computedStore_.assign(need, 0);
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory, "channels of the placed levels");
 	}
@@ -389,7 +381,7 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 		// Every computed level keeps its place in the store, so offsets do not depend
 		// on which rows a frame needs.
 		const size_t need = size_t(kChannelCount) * l.width * l.height;
-		if (offset + need > realStore_.size())
+		if (offset + need > computedStore_.size())
 			return Status::error(ErrorCode::ImageTooLarge, "channels of level %d do not fit", i);
 		realOffset_[i] = offset;
 		offset += need;
@@ -422,7 +414,7 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 		for (int c = 0; c < 3; c++)
 			band[c] = { in[c].row(r.chan.begin), w1, r.chan.size(), in[c].stride };
 		Plane<uint16_t> out[kChannelCount];
-		planesAt(realStore_.data() + offset - need, l.width, l.height, out);
+		planesAt(computedStore_.data() + offset - need, l.width, l.height, out);
 		for (int c = 0; c < kChannelCount; c++)
 			out[c].data = out[c].row(r.chan.begin / 4);
 		channels_.compute(band, w1, r.chan.size(), out);
@@ -591,7 +583,7 @@ void Pyramid::convertLuvRows(FrameInput &input, RowBand rows)
 void Pyramid::realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount])
 {
 	const PyramidLevel &l = scales_.levels[i];
-	planesAt(realStore_.data() + realOffset_[i], l.width, l.height, out);
+	planesAt(computedStore_.data() + realOffset_[i], l.width, l.height, out);
 }
 
 void Pyramid::approximate(int i, const RowBand &rows, const RowBand &cols,

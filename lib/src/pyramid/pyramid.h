@@ -9,7 +9,7 @@
 #include <calped/status.h>
 
 #include "channels/channel_computer.h"
-#include "channels/frame_input.h"
+#include "input/frame_input.h"
 #include "core/plane.h"
 #include "kernels.h"
 #include "pyramid/row_band.h"
@@ -71,8 +71,7 @@ public:
 	// Compute the channels of other levels than the toolbox's octaves (placement.h):
 	// source[i] is the computed level that level i is approximated from (i itself when
 	// computed), for the scale list of maxWidth x maxHeight images; other sizes keep
-	// the toolbox's. Setup time: may grow the channel store. nullptr restores the
-	// toolbox's placement.
+	// the toolbox's. Setup time: may grow the channel store.
 	Status placeComputedLevels(const int *source, int count);
 	// LUV rows a computed level's channels need beyond its channel rows (each side).
 	int channelMargin() const { return channelMargin_; }
@@ -172,7 +171,7 @@ private:
 	bool tapsCached_ = false;
 
 	// Raw (unsmoothed, unpadded) channels of every computed level, back to back.
-	std::vector<uint16_t> realStore_;
+	std::vector<uint16_t> computedStore_;
 	size_t realOffset_[kMaxLevels] = {};
 	PlaneBuffer<uint16_t> approx_;     // channels of one approximated level
 	std::vector<uint16_t> levelBuf_;   // smoothed and padded level for the classifier

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-#include "detect/dense_regions.h"
+#include "search/dense_regions.h"
 
 #include <algorithm>
 

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "channels/frame_input.h"
+#include "input/frame_input.h"
 
 namespace calped {
 
@@ -27,7 +27,8 @@ public:
 	// The cells a box (input pixels) touches in a grid of cellsW x cellsH cells, clipped.
 	static CellRect cellsOf(const Detection &box, int cellsW, int cellsH);
 
-	// Buffers for frames up to maxWidth x maxHeight; checks the settings.
+	// Buffers for frames up to maxWidth x maxHeight (settings checked by
+	// DetectorConfig::validate()).
 	Status init(int maxWidth, int maxHeight, const StaticRejection &settings);
 
 	// The grey cells of this frame (read from `input` a strip at a time), and which of

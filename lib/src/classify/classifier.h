@@ -31,7 +31,6 @@ public:
 	// Window rows and columns of a level with this padded size (the toolbox's counts).
 	void windowGrid(int paddedHeight, int paddedWidth, int &rows, int &cols) const;
 
-	int32_t cascadeThreshold() const { return cascThr_; }
 	void setCascadeThreshold(float thr);
 
 private:

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-#include "detect/classifier.h"
+#include "classify/classifier.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-#include "detect/nms.h"
+#include "suppress/nms.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-#include "channels/frame_input.h"
+#include "input/frame_input.h"
 
 #include <cstdint>
 #include <new>

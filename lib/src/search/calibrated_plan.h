@@ -13,39 +13,19 @@
 
 #include "pyramid/row_band.h"
 #include "pyramid/scales.h"
+#include "search/window_boxes.h"
 
 namespace calped {
 
 class Classifier;
 
-struct WindowGeometry {
-	double shiftH = 0, shiftW = 0; // window origin to box corner, level pixels
-	double resize = 1;
-};
-
-// The box of window (row, col) of a level, in input-image pixels.
-void windowBox(const ModelParams &p, const PyramidLevel &l, const WindowGeometry &g, int row,
-	       int col, double &x, double &y, double &w, double &h);
-
-// Thesis 3.1: the smallest scale the image needs so that a window of modelHeight pixels
-// holds the tallest person. At both bottom corners of a width x height image (the camera is
-// upright, so people are tallest there), a box grows from modelHeight pixels, one pixel at a
-// time, until its world height reaches maxHeight; the scale is modelHeight over the taller
-// of the two. NaN when neither corner sees the ground.
-double smallestNecessaryScale(const CameraModel &camera, int width, int height,
-			      double modelHeight, double maxHeight);
-
-// Thesis eq. 3.1: 1.0 and every octave below it down to `smallest`, with scalesPerOctave
-// linearly spaced scales per octave (1.0, 0.875, 0.75, 0.625, 0.5, ... for 4). Writes at
-// most capacity scales, returns how many.
-int thesisScaleList(double smallest, int scalesPerOctave, double *out, int capacity);
-
 class CalibratedPlan
 {
 public:
-	// scales: the pyramid of the resized frame; padH, padW: padding in cells.
+	// scales: the pyramid of the (resized) frame; boxes: its windows' boxes; padH, padW:
+	// padding in cells.
 	Status build(const CameraModel &camera, const ModelParams &params, const ScaleList &scales,
-		     double resize, int padH, int padW, const Classifier &classifier,
+		     const WindowBoxes &boxes, int padH, int padW, const Classifier &classifier,
 		     double minHeight, double maxHeight);
 
 	bool levelNeeded(int i) const { return first_[i + 1] > first_[i]; }
@@ -64,7 +44,6 @@ public:
 	// Windows of level i, packed row << 16 | column, columns outer (the toolbox's order).
 	const uint32_t *windows(int i) const { return windows_.data() + first_[i]; }
 	size_t windowCount(int i) const { return first_[i + 1] - first_[i]; }
-	size_t totalWindows() const { return windows_.size(); }
 	size_t largestLevelWindows() const;
 
 	// Thesis 3.2.1: the sparse windows of level i, a grid stepping half a box across and
@@ -98,7 +77,7 @@ public:
 private:
 	RowBand windowColsRead(int i, int firstCol, int lastCol) const;
 	ModelParams params_;
-	WindowGeometry geometry_;
+	WindowBoxes boxes_;
 	ScaleList scales_;
 	std::vector<uint32_t> windows_, sparse_;
 	std::vector<uint8_t> plausible_;

@@ -1,56 +1,13 @@
 // SPDX-License-Identifier: BSD-2-Clause
-#include "detect/calibrated_plan.h"
+#include "search/calibrated_plan.h"
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <new>
 
-#include "detect/classifier.h"
+#include "classify/classifier.h"
 
 namespace calped {
-
-void windowBox(const ModelParams &p, const PyramidLevel &l, const WindowGeometry &g, int row,
-	       int col, double &x, double &y, double &w, double &h)
-{
-	x = (col * p.stride + g.shiftW) / l.scaleW / g.resize;
-	y = (row * p.stride + g.shiftH) / l.scaleH / g.resize;
-	w = p.modelDsW / l.scale / g.resize;
-	h = p.modelDsH / l.scale / g.resize;
-}
-
-double smallestNecessaryScale(const CameraModel &camera, int width, int height,
-			      double modelHeight, double maxHeight)
-{
-	double tallest = NAN;
-	for (const double u : { 0.0, double(width - 1) }) {
-		const Eigen::Vector2d foot(u, height - 1);
-		for (double h = modelHeight; h <= 4.0 * height; h += 1.0) {
-			const double world = camera.boxWorldHeight(foot, Eigen::Vector2d(u, foot.y() - h));
-			if (std::isnan(world))
-				break;
-			if (world >= maxHeight) {
-				tallest = std::isnan(tallest) ? h : std::max(tallest, h);
-				break;
-			}
-		}
-	}
-	return modelHeight / tallest;
-}
-
-int thesisScaleList(double smallest, int scalesPerOctave, double *out, int capacity)
-{
-	int n = 0;
-	for (double octave = 1.0; octave >= smallest && octave > 1e-6; octave /= 2) {
-		for (int k = 0; k < scalesPerOctave; k++) {
-			const double s = octave - k * (octave / 2) / scalesPerOctave;
-			if (s < smallest || n == capacity)
-				return n;
-			out[n++] = s;
-		}
-	}
-	return n;
-}
 
 namespace {
 
@@ -68,7 +25,7 @@ RowBand windowRowsRead(const ModelParams &p, int padH, int firstRow, int lastRow
 } // namespace
 
 Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &params,
-			     const ScaleList &scales, double resize, int padH, int padW,
+			     const ScaleList &scales, const WindowBoxes &boxes, int padH, int padW,
 			     const Classifier &classifier, double minHeight, double maxHeight)
 {
 	if (!camera.valid())
@@ -77,14 +34,10 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 		return Status::error(ErrorCode::InvalidArgument,
 				     "pedestrian heights %g..%g m are not a range in (0, 10)", minHeight,
 				     maxHeight);
-	WindowGeometry g;
-	g.shiftH = (params.modelDsPadH - double(params.modelDsH)) / 2 - params.padH;
-	g.shiftW = (params.modelDsPadW - double(params.modelDsW)) / 2 - params.padW;
-	g.resize = resize;
 	params_ = params;
 	padH_ = padH;
 	padW_ = padW;
-	geometry_ = g;
+	boxes_ = boxes;
 	scales_ = scales;
 	// Half a box, in window steps (cells of the level).
 	const int sparseRows = std::max(1, int(std::lround(params.modelDsH / 2 / params.stride)));
@@ -114,9 +67,8 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 			plausibleLast_.resize(plausibleLast_.size() + size_t(cols), -1);
 			for (int c = 0; c < cols; c++)
 				for (int r = 0; r < rows; r++) {
-					double x, y, w, h;
-					windowBox(params, l, g, r, c, x, y, w, h);
-					const Eigen::Vector2d foot(x + w / 2, y + h), head(x + w / 2, y);
+					const WindowBox b = boxes.box(l, r, c);
+					const Eigen::Vector2d foot(b.x + b.w / 2, b.y + b.h), head(b.x + b.w / 2, b.y);
 					const double height = camera.boxWorldHeight(foot, head);
 					if (!(height >= minHeight && height <= maxHeight))
 						continue;
@@ -199,16 +151,7 @@ size_t CalibratedPlan::largestLevelWindows() const
 bool CalibratedPlan::windowsInside(int i, float x0, float y0, float x1, float y1, int &r0,
 				   int &r1, int &c0, int &c1) const
 {
-	const PyramidLevel &l = scales_.levels[i];
-	const double w = params_.modelDsW / l.scale / geometry_.resize;
-	const double h = params_.modelDsH / l.scale / geometry_.resize;
-	// Boxes whose centre lies in the rectangle. Inverting windowBox,
-	// x = (c * stride + shiftW) / scaleW / resize, for x + w/2 in [x0, x1].
-	const double kx = l.scaleW * geometry_.resize, ky = l.scaleH * geometry_.resize;
-	c0 = int(std::ceil(((x0 - w / 2) * kx - geometry_.shiftW) / params_.stride));
-	c1 = int(std::floor(((x1 - w / 2) * kx - geometry_.shiftW) / params_.stride));
-	r0 = int(std::ceil(((y0 - h / 2) * ky - geometry_.shiftH) / params_.stride));
-	r1 = int(std::floor(((y1 - h / 2) * ky - geometry_.shiftH) / params_.stride));
+	boxes_.centredIn(scales_.levels[i], x0, y0, x1, y1, r0, r1, c0, c1);
 	c0 = std::max(c0, 0);
 	r0 = std::max(r0, 0);
 	c1 = std::min(c1, cols_[i] - 1);

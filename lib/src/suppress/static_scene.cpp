@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-#include "detect/static_scene.h"
+#include "suppress/static_scene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,18 +10,6 @@ namespace calped {
 
 Status StaticScene::init(int maxWidth, int maxHeight, const StaticRejection &settings)
 {
-	if (settings.difference < 1 || settings.difference > 254)
-		return Status::error(ErrorCode::InvalidArgument,
-				     "static rejection: difference %d is outside 1..254 grey levels",
-				     settings.difference);
-	if (!(settings.minForeground >= 0.0f && settings.minForeground <= 1.0f))
-		return Status::error(ErrorCode::InvalidArgument,
-				     "static rejection: minForeground %g is outside [0, 1]",
-				     double(settings.minForeground));
-	// The first frame is its own background: it cannot tell anything apart.
-	if (settings.warmupFrames < 1)
-		return Status::error(ErrorCode::InvalidArgument,
-				     "static rejection: warmupFrames %d must be >= 1", settings.warmupFrames);
 	settings_ = settings;
 	try {
 		const size_t cells = size_t(maxWidth / 4 + 1) * size_t(maxHeight / 4 + 1);

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// The calibrated method's search (thesis 3.2): which windows of which levels are
+// classified in a frame, and which parts of the pyramid that needs. With sparse and dense
+// windows, two passes: pass 1 the sparse grid (with static rejection, only what moves of
+// it) and the dense regions kept from earlier frames; pass 2 the regions new around pass
+// 1's candidates. Without, one pass over every plausible window. Everything is sized in
+// init(); a frame allocates nothing.
+#pragma once
+
+#include <calped/calibration.h>
+#include <calped/detector.h>
+
+#include <vector>
+
+#include "classify/candidates.h"
+#include "classify/classifier.h"
+#include "pyramid/pyramid.h"
+#include "search/calibrated_plan.h"
+#include "search/dense_regions.h"
+#include "search/window_boxes.h"
+#include "suppress/static_scene.h"
+
+namespace calped {
+
+class CalibratedSearch
+{
+public:
+	// Plans the windows of maximum-size frames (frameW x frameH after any frame resize),
+	// places the pyramid's computed levels if asked, and sizes every buffer. `scene` is
+	// the static scene when static rejection is on (the sparse grid is then gated by it),
+	// else null.
+	Status init(const CameraModel &camera, const ModelParams &params,
+		    const CalibratedSettings &settings, const WindowBoxes &boxes, int frameW,
+		    int frameH, int maxCandidates, Pyramid &pyramid, const Classifier &classifier,
+		    const StaticScene *scene);
+
+	// The rows of each level that Pyramid::build() must compute for this frame's search:
+	// none when the passes ask for rectangles later (Pyramid::ensureRects).
+	const RowBand *levelBands() const { return rectsPerFrame_ ? noRows_ : levelRows_; }
+
+	// Picks this frame's sparse windows (the static gate); before Pyramid::build().
+	void beginFrame(FrameStats &stats);
+	// Classifies this frame's windows into `out`, computing the pyramid where the passes
+	// need it.
+	Status run(FrameInput &input, Pyramid &pyramid, const Classifier &classifier,
+		   Candidates &out, FrameStats &stats);
+	// Thesis 3.4, after suppression: regions without a detection age and go.
+	void endFrame(const Detection *detections, int count, FrameStats &stats);
+
+	// Test hooks (detector_internals.h): compute the plan's fixed bands in build()
+	// instead of per-pass rectangles, and the gate of the sparse grid on or off.
+	bool rectsPerFrame() const { return rectsPerFrame_; }
+	void setRectsPerFrame(bool on) { rectsPerFrame_ = on && rectsAllowed_; }
+	void setStaticGate(bool on) { gate_ = on && scene_ != nullptr; }
+
+private:
+	// One pass of the sparse-dense search over the regions from firstRegion on (and
+	// with `sparse`, this frame's sparse grid).
+	Status pass(FrameInput &input, Pyramid &pyramid, const Classifier &classifier,
+		    Candidates &out, FrameStats &stats, int firstRegion, bool sparse);
+	// Rectangle mode: the cells each level's windows read in this pass, merged; then the
+	// pyramid computes what they need (Pyramid::ensureRects).
+	Status prepareRects(FrameInput &input, Pyramid &pyramid, FrameStats &stats,
+			    int firstRegion, bool sparse);
+	// Windows of level i inside region r not evaluated yet, appended to frameList_.
+	size_t collectDense(int i, const DenseRegion &r, size_t n);
+	// Level i prepared where the first n windows of frameList_ read, and classified.
+	void classifyListed(int i, size_t n, Pyramid &pyramid, const Classifier &classifier,
+			    Candidates &out, FrameStats &stats);
+
+	CalibratedSettings settings_;
+	CalibratedPlan plan_;
+	int levels_ = 0;
+	bool levelNeeded_[kMaxLevels] = {};
+	RowBand levelRows_[kMaxLevels]; // the rows of each level its plausible windows read
+	RowBand noRows_[kMaxLevels];    // build()'s bands when rectangles come later
+	// Sparse-dense with computed levels that all come from the image itself (placed
+	// levels): build() computes nothing, and each pass has the pyramid computed in
+	// rectangles around what its windows read.
+	bool rectsPerFrame_ = false, rectsAllowed_ = false;
+	LevelRect levelRects_[kMaxLevels][Pyramid::kMaxRects];
+	int levelRectCount_[kMaxLevels] = {};
+	int rectLevels_[kMaxLevels * Pyramid::kMaxRects] = {};
+	LevelRect rectList_[kMaxLevels * Pyramid::kMaxRects];
+	// The static gate of the sparse grid: each sparse window's box as cells of the static
+	// scene (plan order, level after level), and this frame's sparse windows per level.
+	const StaticScene *scene_ = nullptr;
+	bool gate_ = false;
+	std::vector<StaticScene::CellRect> sparseCells_;
+	std::vector<uint32_t> movingSparse_;
+	const uint32_t *sparseList_[kMaxLevels] = {};
+	size_t sparseCount_[kMaxLevels] = {};
+	DenseRegions regions_;
+	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
+	std::vector<uint32_t> frameList_;
+	std::vector<int> order_; // candidates best first, for new regions
+};
+
+} // namespace calped
