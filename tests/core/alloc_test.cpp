@@ -165,7 +165,7 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 			    (unsigned long long)det->lastStats().windows);
 		EXPECT_GT(det->lastStats().windows, 0u);
 		// Placed levels are computed in rectangles around what each pass reads
-		// (Pyramid::ensureRects): that path ran in these frames.
+		// (Pyramid::compute with rectangles): that path ran in these frames.
 		if (variant >= 2) {
 			EXPECT_GT(DetectorInternals::of(*det).pyramid.rectsComputed, 0);
 		}

@@ -88,11 +88,21 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 		applyComputedLevels(scales, source);
 	}
 	input.begin(image.view());
-	ASSERT_TRUE(full.build(input).ok());
+	full.beginFrame();
+	ASSERT_TRUE(full.compute(input, PyramidDemand::wholeFrame()).ok());
 	for (int i = 0; i < scales.count; i++)
 		ASSERT_EQ(full.scales().levels[i].source, scales.levels[i].source) << "level " << i;
 	input.begin(image.view());
-	ASSERT_TRUE(banded.build(input, bands).ok());
+	// The bands as one demand of full-width rectangles.
+	std::vector<int> levels;
+	std::vector<LevelRect> rects;
+	for (int i = 0; i < scales.count; i++)
+		if (!bands[i].empty()) {
+			levels.push_back(i);
+			rects.push_back(LevelRect{ bands[i], RowBand{ 0, scales.levels[i].width } });
+		}
+	banded.beginFrame();
+	ASSERT_TRUE(banded.compute(input, PyramidDemand::of(levels.data(), rects.data(), int(rects.size()))).ok());
 	ASSERT_EQ(banded.scales().count, scales.count);
 	EXPECT_LE(banded.computedCount, full.computedCount);
 
@@ -100,8 +110,8 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 		const RowBand band = bands[i].clipped(scales.levels[i].height);
 		if (band.empty())
 			continue;
-		const LevelChannels part = banded.level(i); // each pyramid owns its level buffer
-		const LevelChannels whole = full.level(i);
+		const LevelChannels part = banded.prepare(i); // each pyramid owns its level buffer
+		const LevelChannels whole = full.prepare(i);
 		checkLevelRows(whole, part, band, scales.levels[i].height, full.padCellsH(), i);
 	}
 }
@@ -135,7 +145,7 @@ TEST(PyramidBands, RowsEqualTheFullPyramidWithPlacedLevels)
 }
 
 // Placed levels built with nothing computed, then made preparable in rectangles
-// (Pyramid::ensureRects, twice, as the detector's two passes do): every rectangle equals
+// (Pyramid::compute, twice, as the detector's two passes do): every rectangle equals
 // the full pyramid's level there, padding included where it touches a side.
 void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, uint32_t seed,
 		       PixelFormat format)
@@ -149,7 +159,7 @@ void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, u
 	ASSERT_TRUE(input.init(width, height, false).ok());
 	ScaleList scales;
 	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
-	RowBand all[kMaxLevels], none[kMaxLevels];
+	RowBand all[kMaxLevels];
 	for (int i = 0; i < scales.count; i++)
 		all[i] = RowBand{ 0, scales.levels[i].height };
 	int source[kMaxLevels];
@@ -158,10 +168,10 @@ void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, u
 	ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
 	ASSERT_TRUE(part.rectsComputable(width, height));
 	input.begin(image.view());
-	ASSERT_TRUE(full.build(input).ok());
+	full.beginFrame();
+	ASSERT_TRUE(full.compute(input, PyramidDemand::wholeFrame()).ok());
 	input.begin(image.view());
-	ASSERT_TRUE(part.build(input, none).ok());
-	EXPECT_EQ(part.computedCount, 0);
+	part.beginFrame();
 	std::mt19937 rng(seed);
 	for (int pass = 0; pass < 2; pass++) {
 		// A few small rectangles on random levels, most inside (so their edges are not
@@ -181,7 +191,7 @@ void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, u
 			rects.push_back(LevelRect{ RowBand{ r0, r1 }, RowBand{ c0, c1 } });
 		}
 		const long before = part.rectsComputed;
-		ASSERT_TRUE(part.ensureRects(input, levels.data(), rects.data(), int(rects.size())).ok());
+		ASSERT_TRUE(part.compute(input, PyramidDemand::of(levels.data(), rects.data(), int(rects.size()))).ok());
 		if (pass == 0) {
 			EXPECT_GT(part.rectsComputed, before);
 		}
@@ -189,9 +199,10 @@ void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, u
 			const int i = levels[k];
 			const int h = scales.levels[i].height, w = scales.levels[i].width;
 			const RowBand rows = rects[k].rows.clipped(h), cols = rects[k].cols.clipped(w);
-			const LevelChannels a = full.level(i);
+			const LevelChannels a = full.prepare(i);
 			std::vector<uint16_t> expected(a.data, a.data + kChannelCount * a.planeStride);
-			const LevelChannels b = part.level(i, &rows, &cols);
+			const LevelRect read{ rows, cols };
+			const LevelChannels b = part.prepare(i, &read, 1);
 			const int padW = full.padCellsW(), padH = full.padCellsH();
 			const int y0 = rows.begin == 0 ? 0 : rows.begin + padH;
 			const int y1 = rows.end == h ? b.paddedHeight : rows.end + padH;
@@ -252,10 +263,11 @@ TEST(PyramidBands, RectanglesMergeNearNeighbours)
 	}
 }
 
-TEST(PyramidBands, RectanglesOfTheToolboxOctavesAreRefused)
+TEST(PyramidBands, ToolboxOctavesTakeOneDemandPerFrame)
 {
 	// The toolbox's octaves resample the smaller ones from the half-size image, which
-	// ensureRects does not rebuild: it says so instead of returning stale channels.
+	// rectangles do not rebuild: a frame's first demand is computed in full-width bands,
+	// and a later one outside it is refused by name instead of returning stale channels.
 	const int width = 320, height = 240;
 	ModelParams p;
 	Pyramid pyr;
@@ -265,11 +277,15 @@ TEST(PyramidBands, RectanglesOfTheToolboxOctavesAreRefused)
 	FrameInput input;
 	ASSERT_TRUE(input.init(width, height, false).ok());
 	input.begin(ImageView::rgb8(rgb.data(), width, height));
-	RowBand none[kMaxLevels];
-	ASSERT_TRUE(pyr.build(input, none).ok());
 	const int level = 0;
-	const LevelRect rect{ RowBand{ 0, 5 }, RowBand{ 0, 5 } };
-	const Status st = pyr.ensureRects(input, &level, &rect, 1);
+	const LevelRect rect{ RowBand{ 0, 5 }, RowBand{ 0, 5 } }, inside{ RowBand{ 1, 4 }, RowBand{ 2, 9 } },
+			outside{ RowBand{ 6, 9 }, RowBand{ 0, 5 } };
+	pyr.beginFrame();
+	ASSERT_TRUE(pyr.compute(input, PyramidDemand::of(&level, &rect, 1)).ok());
+	EXPECT_GT(pyr.computedCount, 0);
+	EXPECT_EQ(pyr.rectsComputed, 0);
+	EXPECT_TRUE(pyr.compute(input, PyramidDemand::of(&level, &inside, 1)).ok());
+	const Status st = pyr.compute(input, PyramidDemand::of(&level, &outside, 1));
 	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
 	EXPECT_NE(std::string(st.message()).find("half-size"), std::string::npos) << st.message();
 }
@@ -293,10 +309,10 @@ TEST(PyramidBands, PlacementIsCheckedAndSizedForTheMaximumFrame)
 		source[i] = i;
 	ASSERT_TRUE(pyr.placeComputedLevels(source, scales.count).ok());
 	const std::vector<uint8_t> rgb = test::randomImage(4, 200, 150);
-	ASSERT_TRUE(pyr.build(rgb.data(), 3 * 200, 200, 150).ok());
+	ASSERT_TRUE(pyr.compute(rgb.data(), 3 * 200, 200, 150).ok());
 	EXPECT_EQ(pyr.computedCount, scales.count);
 	// Another frame size keeps the toolbox's octaves.
-	ASSERT_TRUE(pyr.build(rgb.data(), 3 * 200, 180, 150).ok());
+	ASSERT_TRUE(pyr.compute(rgb.data(), 3 * 200, 180, 150).ok());
 	EXPECT_LT(pyr.computedCount, pyr.scales().count);
 }
 
@@ -325,8 +341,8 @@ TEST(PyramidBands, ColumnRangesEqualTheFullLevel)
 			ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
 			ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
 		}
-		ASSERT_TRUE(full.build(rgb.data(), 3 * width, width, height).ok());
-		ASSERT_TRUE(part.build(rgb.data(), 3 * width, width, height).ok());
+		ASSERT_TRUE(full.compute(rgb.data(), 3 * width, width, height).ok());
+		ASSERT_TRUE(part.compute(rgb.data(), 3 * width, width, height).ok());
 		std::mt19937 rng(placed ? 7 : 3);
 		for (int i = 0; i < scales.count; i++) {
 			const int h = scales.levels[i].height, w = scales.levels[i].width;
@@ -338,9 +354,10 @@ TEST(PyramidBands, ColumnRangesEqualTheFullLevel)
 				if (trial == 2)
 					c1 = w, r0 = 0; // the right side and the top
 				const RowBand rows{ r0, r1 }, cols{ c0, c1 };
-				const LevelChannels a = full.level(i);
+				const LevelChannels a = full.prepare(i);
 				std::vector<uint16_t> expected(a.data, a.data + kChannelCount * a.planeStride);
-				const LevelChannels b = part.level(i, &rows, &cols);
+				const LevelRect read{ rows, cols };
+				const LevelChannels b = part.prepare(i, &read, 1);
 				const int pad = full.padCellsW(), padH = full.padCellsH();
 				const int y0 = r0 == 0 ? 0 : r0 + padH, y1 = r1 == h ? b.paddedHeight : r1 + padH;
 				const int x0 = c0 == 0 ? 0 : c0 + pad, x1 = c1 == w ? b.paddedWidth : c1 + pad;
@@ -372,15 +389,14 @@ TEST(PyramidBands, RowsEqualTheFullPyramidFromCameraFormats)
 	}
 }
 
-TEST(PyramidBands, NoBandsComputeNothing)
+TEST(PyramidBands, AnEmptyDemandComputesNothing)
 {
 	const int width = 200, height = 150;
 	const std::vector<uint8_t> rgb = test::randomImage(3, width, height);
 	ModelParams p;
 	Pyramid pyr;
 	ASSERT_TRUE(pyr.init(p, width, height).ok());
-	RowBand none[kMaxLevels];
-	ASSERT_TRUE(pyr.build(rgb.data(), 3 * width, width, height, none).ok());
+	ASSERT_TRUE(pyr.compute(rgb.data(), 3 * width, width, height, PyramidDemand::of(nullptr, nullptr, 0)).ok());
 	EXPECT_EQ(pyr.computedCount, 0);
 }
 

@@ -131,14 +131,14 @@ TEST(PyramidParity, Frame1LevelsWithinTolerance)
 	ModelParams p;
 	Pyramid pyr;
 	ASSERT_TRUE(pyr.init(p, img.width, img.height).ok());
-	const Status st = pyr.build(img.pixels.data(), 3 * img.width, img.width, img.height);
+	const Status st = pyr.compute(img.pixels.data(), 3 * img.width, img.width, img.height);
 	ASSERT_TRUE(st.ok()) << st.message();
 	ASSERT_EQ(pyr.scales().count, 21);
 
 	size_t offset = 0;
 	double worstMeanPct = 0, worstP99Pct = 0;
 	for (int i = 0; i < pyr.scales().count; i++) {
-		const LevelChannels lc = pyr.level(i);
+		const LevelChannels lc = pyr.prepare(i);
 		const int h = lc.paddedHeight, w = lc.paddedWidth;
 		ASSERT_LE(offset + size_t(h) * w * kChannelCount, ref.size());
 		for (int c = 0; c < kChannelCount; c++) {

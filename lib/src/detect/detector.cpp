@@ -118,18 +118,16 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 		return st;
 	stats.msResize = msSince(tResize);
 
-	// Pyramid and search: all of it for the generic method; for the calibrated one the
-	// bands its plan reads, or nothing yet when its passes ask for rectangles.
+	// Search: each pass demands from the pyramid what its windows read, and classifies
+	// them (the generic method: the whole pyramid, every window).
 	candidates_.clear();
-	if (calibrated_)
+	pyramid.beginFrame();
+	if (calibrated_) {
 		calibrated.beginFrame(stats);
-	st = pyramid.build(frame, calibrated_ ? calibrated.levelBands() : nullptr);
-	if (!st.ok())
-		return st;
-	if (calibrated_)
 		st = calibrated.run(frame, pyramid, classifier, candidates_, stats);
-	else
-		searchEveryWindow(pyramid, classifier, candidates_, stats);
+	} else {
+		st = searchEveryWindow(frame, pyramid, classifier, candidates_, stats);
+	}
 	if (!st.ok())
 		return st;
 

@@ -108,7 +108,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		planeStride_ = rowStride_ * (maxLevelH_ + 2 * padH_);
 		levelBuf_.assign(size_t(kChannelCount) * planeStride_, 0);
 		rowTmp_.assign(size_t(std::max(luvW, luvH)) * 2 + 64, 0);
-		buildTapCache(); // without it (a ratio beyond the resampler) build() reports that
+		buildTapCache(); // without it (a ratio beyond the resampler) compute() reports that
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory,
 				     "pyramid buffers for %dx%d frames do not fit in memory",
@@ -300,7 +300,7 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 		const bool fromHalf = halfLevel_ >= 0 && i > halfLevel_;
 		const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
 		if (!taps)
-			continue; // build() reports it
+			continue; // computeBands() reports it
 		const RowBand src = sourceRows(taps, r.luv);
 		if (fromHalf)
 			rows_[halfLevel_].luv.add(src);
@@ -344,7 +344,7 @@ void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *ds
 			   xTaps + c.begin, tmp.data, tmp.stride);
 }
 
-Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
+Status Pyramid::computeBands(FrameInput &input, const RowBand *levelRows)
 {
 	const auto t0 = Clock::now();
 	const int width = input.width(), height = input.height();
@@ -426,6 +426,48 @@ Status Pyramid::build(FrameInput &input, const RowBand *levelRows)
 	return Status::success();
 }
 
+Status Pyramid::compute(FrameInput &input, const PyramidDemand &demand)
+{
+	const bool first = frameDemands_++ == 0;
+	if (demand.everything)
+		return first ? computeBands(input, nullptr)
+			     : Status::error(ErrorCode::InvalidArgument,
+					     "the whole frame must be the frame's first demand");
+	if (first) {
+		// Nothing computed yet; then the rectangles, where the levels allow.
+		for (int i = 0; i < kMaxLevels; i++)
+			demandBands_[i] = RowBand();
+		const Status st = computeBands(input, demandBands_);
+		if (!st.ok() || halfLevel_ < 0)
+			return st.ok() ? computeRects(input, demand.levels, demand.rects, demand.count) : st;
+		// A half-size source: full-width bands of the demanded rows.
+		for (int k = 0; k < demand.count; k++)
+			demandBands_[demand.levels[k]].add(demand.rects[k].rows);
+		return computeBands(input, demandBands_);
+	}
+	if (halfLevel_ < 0)
+		return computeRects(input, demand.levels, demand.rects, demand.count);
+	for (int k = 0; k < demand.count; k++)
+		if (!demandBands_[demand.levels[k]].contains(demand.rects[k].rows))
+			return Status::error(ErrorCode::InvalidArgument,
+					     "level %d rows %d..%d: outside the frame's first demand, and "
+					     "this pyramid (a half-size source) cannot extend it",
+					     demand.levels[k], demand.rects[k].rows.begin,
+					     demand.rects[k].rows.end);
+	return Status::success();
+}
+
+LevelChannels Pyramid::prepare(int i, const LevelRect *rects, int count)
+{
+	if (!rects)
+		return prepareRect(i, nullptr, nullptr);
+	// Rectangles of one level share its buffer: each call fills its own part.
+	LevelChannels out;
+	for (int k = 0; k < count; k++)
+		out = prepareRect(i, &rects[k].rows, &rects[k].cols);
+	return out;
+}
+
 bool Pyramid::rectsComputable(int width, int height) const
 {
 	ScaleList scales;
@@ -460,11 +502,8 @@ Status Pyramid::levelColour(FrameInput &input, int i, const RowBand &chan, const
 	return Status::success();
 }
 
-Status Pyramid::ensureRects(FrameInput &input, const int *levels, const LevelRect *rects, int count)
+Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRect *rects, int count)
 {
-	if (halfLevel_ >= 0)
-		return Status::error(ErrorCode::InvalidArgument,
-				     "rectangles cannot be computed: a half-size image is in use");
 	const int reach = params_.pyramidSmooth > 0 ? 1 : 0;
 	// What each computed level must hold: the raw rectangles of its own level and the
 	// source rectangles of the levels approximated from it, merged. Merged rectangles
@@ -479,7 +518,7 @@ Status Pyramid::ensureRects(FrameInput &input, const int *levels, const LevelRec
 			       rects[k].cols.clipped(l.width).grown(reach, l.width) };
 		if (raw.empty())
 			continue;
-		// level() checks its rows against these.
+		// prepare() checks its rows against these.
 		rows_[i].raw.add(raw.rows);
 		if (!l.computed) {
 			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
@@ -606,7 +645,7 @@ void Pyramid::approximate(int i, const RowBand &rows, const RowBand &cols,
 		resampleRows(src, out, kChannelCount, yTaps, rows, xTaps, &cols);
 }
 
-LevelChannels Pyramid::level(int i, const RowBand *only, const RowBand *onlyCols)
+LevelChannels Pyramid::prepareRect(int i, const RowBand *only, const RowBand *onlyCols)
 {
 	const PyramidLevel &l = scales_.levels[i];
 	const int reach = params_.pyramidSmooth > 0 ? 1 : 0;
@@ -617,7 +656,7 @@ LevelChannels Pyramid::level(int i, const RowBand *only, const RowBand *onlyCols
 		const RowBand wanted = *only;
 		band = wanted.grown(reach, l.height);
 		if (!rows_[i].raw.contains(band))
-			band = rows_[i].raw; // outside what build() prepared: keep its band
+			band = rows_[i].raw; // outside what was computed: keep its band
 	}
 	// The same across: columns one wider than those wanted (the smoothing treats the ends
 	// of the range as the level's edges, so only the wanted columns are exact), padding

@@ -27,45 +27,63 @@ struct LevelChannels {
 	ptrdiff_t planeStride = 0;
 };
 
+// What a pass of the search will read: rectangles of levels (cells before padding), or
+// every level whole. Points into the caller's arrays.
+struct PyramidDemand {
+	bool everything = false;
+	const int *levels = nullptr;       // level of each rectangle
+	const LevelRect *rects = nullptr;
+	int count = 0;
+
+	static PyramidDemand wholeFrame()
+	{
+		PyramidDemand d;
+		d.everything = true;
+		return d;
+	}
+	static PyramidDemand of(const int *levels, const LevelRect *rects, int count)
+	{
+		PyramidDemand d;
+		d.levels = levels;
+		d.rects = rects;
+		d.count = count;
+		return d;
+	}
+};
+
 class Pyramid
 {
 public:
-	// maxWidth x maxHeight: the largest RGB image build() will see (after any resize).
+	// maxWidth x maxHeight: the largest RGB image compute() will see (after any resize).
 	// upscale >= 1: the levels are those of the image resized by this factor, each
 	// resampled from the image's colour channels (computeScales) instead of the image
 	// being resized first.
 	Status init(const ModelParams &params, int maxWidth, int maxHeight,
 		    const kernels::KernelTable &k = kernels::bestKernels(), double upscale = 1.0);
 
-	// Colour conversion and channels of the computed levels for one image, read from
-	// `input` a strip of RGB8 rows at a time: all of them, or (levelRows non-null, one
-	// band per level of scales(), in rows of the level before padding) only what the
-	// classifier will read of each level: the level's rows in its band, and the padding
-	// beside them. Empty bands skip a level.
-	Status build(FrameInput &input, const RowBand *levelRows = nullptr);
+	// The one way channels get computed. A frame starts with beginFrame(); each compute()
+	// then computes what `demand` needs that the frame has not computed yet: colour
+	// conversion, the computed levels' channels (with their margin) and, through
+	// prepare(), the approximated levels. The whole frame is one demand. Rectangles are
+	// computed as such when every computed level comes from the image itself (placed
+	// levels, or octaves without a half-size source); otherwise a frame takes one demand
+	// (full-width bands of the rows it asks for) and later ones must lie inside it.
+	void beginFrame() { frameDemands_ = 0; }
+	Status compute(FrameInput &input, const PyramidDemand &demand);
 	// The same for an RGB8 image in memory.
-	Status build(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
-		     const RowBand *levelRows = nullptr)
+	Status compute(const uint8_t *rgb, ptrdiff_t stride, int width, int height,
+		       const PyramidDemand &demand = PyramidDemand::wholeFrame())
 	{
 		FrameInput input;
 		input.begin(ImageView::rgb8(rgb, width, height, int(stride)));
-		return build(input, levelRows);
+		beginFrame();
+		return compute(input, demand);
 	}
-
-	// After build() with bands (empty ones: nothing computed yet): make each level
-	// levels[k] preparable in rectangle rects[k] (level(i, &rows, &cols)), computing its
-	// computed level only in the rectangles these need (with the channels' margin) that
-	// this frame has not computed yet: where a caller reads a few parts of each level,
-	// that is far fewer pixels than full-width bands. The sources' rectangles are merged
-	// first, and further when more than kMaxRects of them are apart. For images whose
-	// computed levels all come from the image itself (rectsComputable); no allocation.
-	static constexpr int kMaxRects = 32;
-	Status ensureRects(FrameInput &input, const int *levels, const LevelRect *rects, int count);
-	// Whether ensureRects() works for images of this size: no computed level is resampled
-	// from a half-size image (true of placed levels).
+	static constexpr int kMaxRects = 32; // rectangles kept per level and frame
+	// Whether compute() works in rectangles for images of this size.
 	bool rectsComputable(int width, int height) const;
 
-	// The scale list build() will use for an image of this size (for setup).
+	// The scale list compute() will use for an image of this size (for setup).
 	Status scalesFor(int width, int height, ScaleList &out) const;
 
 	// Compute the channels of other levels than the toolbox's octaves (placement.h):
@@ -78,25 +96,33 @@ public:
 
 	const ScaleList &scales() const { return scales_; }
 
-	// Smooth and pad level i (computing it by approximation first if needed), in the
-	// band build() was given for it, or only in rows `only` of that band, and then, if
-	// `onlyCols` is given, only in those columns (before padding) of them; rows and
-	// columns outside hold stale data.
-	LevelChannels level(int i, const RowBand *only = nullptr, const RowBand *onlyCols = nullptr);
+	// Level i smoothed and padded for the classifier (approximated first if need be):
+	// all that compute() prepared of it (rects null), or only these rectangles (cells
+	// before padding, each inside what was demanded); everything outside is stale.
+	LevelChannels prepare(int i, const LevelRect *rects = nullptr, int count = 0);
 
 	ptrdiff_t rowStride() const { return rowStride_; }
 	ptrdiff_t planeStride() const { return planeStride_; }
 	int padCellsH() const { return padH_; }
 	int padCellsW() const { return padW_; }
 
-	// Levels whose channels the last build() computed (or ensureRects() began).
+	// Levels whose channels this frame computed.
 	int computedCount = 0;
-	// Rectangles ensureRects() has computed since init (tests, tuning).
+	// Rectangles computed as such since init (tests, tuning).
 	long rectsComputed = 0;
-	// Time spent in the last build() / level() calls, for FrameStats.
+	// Time spent on this frame in compute() and prepare(), for FrameStats.
 	double msChannels = 0, msApprox = 0, msSmooth = 0;
 
 private:
+	// Full-width bands of every level (levelRows: one per level, rows before padding;
+	// null: whole levels): the frame's colour and computed levels there, from scratch.
+	Status computeBands(FrameInput &input, const RowBand *levelRows);
+	// After computeBands(), the rectangles of a demand not computed yet this frame.
+	Status computeRects(FrameInput &input, const int *levels, const LevelRect *rects, int count);
+	// Level i smoothed and padded in rows `only` and columns `onlyCols` of what was
+	// computed (null: all of it).
+	LevelChannels prepareRect(int i, const RowBand *only, const RowBand *onlyCols);
+
 	// The rows each stage must produce for the bands the classifier needs.
 	struct LevelRows {
 		RowBand raw;    // raw channel rows (those the classifier reads plus the smoothing's reach)
@@ -143,7 +169,7 @@ private:
 	ChannelComputer channels_;
 	ScaleList scales_;
 	LevelRows rows_[kMaxLevels];
-	// ensureRects(): this frame's computed rectangles of each computed level (exact, so
+	// computeRects(): this frame's computed rectangles of each computed level (exact, so
 	// never merged; the oldest is forgotten when full), and the rectangles asked for.
 	LevelRect doneRects_[kMaxLevels][kMaxRects];
 	int doneCount_[kMaxLevels] = {};
@@ -152,6 +178,8 @@ private:
 	int needCount_[kMaxLevels] = {};
 	RowBand fullRows_; // rows of the whole-image LUV planes the levels read
 	int halfLevel_ = -1; // the computed level at scale 1/2, source of smaller octaves
+	int frameDemands_ = 0; // compute() calls since beginFrame()
+	RowBand demandBands_[kMaxLevels]; // a band frame's demand, as rows per level
 	int channelMargin_ = 8;
 	int width_ = 0, height_ = 0;
 	int maxWidth_ = 0, maxHeight_ = 0;

@@ -36,11 +36,16 @@ Status CalibratedSearch::init(const CameraModel &camera, const ModelParams &para
 	if (!st.ok())
 		return st;
 	levels_ = scales.count;
+	bandCount_ = 0;
 	for (int i = 0; i < levels_; i++) {
 		levelNeeded_[i] = plan_.levelNeeded(i);
 		levelRows_[i] = plan_.levelRows(i);
 		sparseList_[i] = plan_.sparseWindows(i);
 		sparseCount_[i] = plan_.sparseCount(i);
+		if (!levelRows_[i].empty()) {
+			bandLevels_[bandCount_] = i;
+			bandRects_[bandCount_++] = LevelRect{ levelRows_[i], RowBand{ 0, 1 << 30 } };
+		}
 	}
 	if (settings.levels == PyramidLevels::Placed) {
 		int source[kMaxLevels];
@@ -118,12 +123,17 @@ void CalibratedSearch::beginFrame(FrameStats &stats)
 Status CalibratedSearch::run(FrameInput &input, Pyramid &pyramid, const Classifier &classifier,
 			     Candidates &out, FrameStats &stats)
 {
+	if (!rectsPerFrame_) {
+		const Status st = pyramid.compute(input, PyramidDemand::of(bandLevels_, bandRects_, bandCount_));
+		if (!st.ok())
+			return st;
+	}
 	if (!settings_.sparseDense) {
-		// Every plausible window, in the bands build() computed.
+		// Every plausible window, in the plan's bands.
 		for (int i = 0; i < levels_; i++) {
 			if (!levelNeeded_[i])
 				continue;
-			const LevelChannels level = pyramid.level(i);
+			const LevelChannels level = pyramid.prepare(i);
 			const auto t0 = Clock::now();
 			out.classify(classifier, pyramid.scales().levels[i], level, plan_.windows(i),
 				     plan_.windowCount(i), stats);
@@ -209,19 +219,16 @@ void CalibratedSearch::classifyListed(int i, size_t n, Pyramid &pyramid,
 		// edge of one does not reach into another).
 		if (levelRectCount_[i] == 0)
 			return;
-		LevelChannels channels;
-		for (int k = 0; k < levelRectCount_[i]; k++)
-			channels = pyramid.level(i, &levelRects_[i][k].rows, &levelRects_[i][k].cols);
+		const LevelChannels channels = pyramid.prepare(i, levelRects_[i], levelRectCount_[i]);
 		const auto t0 = Clock::now();
 		out.classify(classifier, level, channels, frameList_.data(), n, stats);
 		stats.msClassify += msSince(t0);
 		return;
 	}
-	// Level i prepared only in the rows and columns these windows read (of the bands
-	// build() computed).
-	const RowBand rows = plan_.rowsRead(i, frameList_.data(), n);
-	const RowBand cols = plan_.colsRead(i, frameList_.data(), n);
-	const LevelChannels channels = pyramid.level(i, &rows, &cols);
+	// Level i prepared only in the rows and columns these windows read (of the plan's
+	// bands).
+	const LevelRect read{ plan_.rowsRead(i, frameList_.data(), n), plan_.colsRead(i, frameList_.data(), n) };
+	const LevelChannels channels = pyramid.prepare(i, &read, 1);
 	const auto t0 = Clock::now();
 	out.classify(classifier, level, channels, frameList_.data(), n, stats);
 	stats.msClassify += msSince(t0);
@@ -289,7 +296,7 @@ Status CalibratedSearch::prepareRects(FrameInput &input, Pyramid &pyramid, Frame
 		}
 	}
 	stats.msCandidates += msSince(t0);
-	return pyramid.ensureRects(input, rectLevels_, rectList_, count);
+	return pyramid.compute(input, PyramidDemand::of(rectLevels_, rectList_, count));
 }
 
 void CalibratedSearch::endFrame(const Detection *detections, int count, FrameStats &stats)

@@ -34,21 +34,17 @@ public:
 		    int frameH, int maxCandidates, Pyramid &pyramid, const Classifier &classifier,
 		    const StaticScene *scene);
 
-	// The rows of each level that Pyramid::build() must compute for this frame's search:
-	// none when the passes ask for rectangles later (Pyramid::ensureRects).
-	const RowBand *levelBands() const { return rectsPerFrame_ ? noRows_ : levelRows_; }
-
-	// Picks this frame's sparse windows (the static gate); before Pyramid::build().
+	// Picks this frame's sparse windows (the static gate).
 	void beginFrame(FrameStats &stats);
-	// Classifies this frame's windows into `out`, computing the pyramid where the passes
-	// need it.
+	// Classifies this frame's windows into `out`, each pass demanding from the pyramid
+	// what its windows read.
 	Status run(FrameInput &input, Pyramid &pyramid, const Classifier &classifier,
 		   Candidates &out, FrameStats &stats);
 	// Thesis 3.4, after suppression: regions without a detection age and go.
 	void endFrame(const Detection *detections, int count, FrameStats &stats);
 
-	// Test hooks (detector_internals.h): compute the plan's fixed bands in build()
-	// instead of per-pass rectangles, and the gate of the sparse grid on or off.
+	// Test hooks (detector_internals.h): demand the plan's whole bands once per frame
+	// instead of each pass's rectangles, and the gate of the sparse grid on or off.
 	bool rectsPerFrame() const { return rectsPerFrame_; }
 	void setRectsPerFrame(bool on) { rectsPerFrame_ = on && rectsAllowed_; }
 	void setStaticGate(bool on) { gate_ = on && scene_ != nullptr; }
@@ -59,7 +55,7 @@ private:
 	Status pass(FrameInput &input, Pyramid &pyramid, const Classifier &classifier,
 		    Candidates &out, FrameStats &stats, int firstRegion, bool sparse);
 	// Rectangle mode: the cells each level's windows read in this pass, merged; then the
-	// pyramid computes what they need (Pyramid::ensureRects).
+	// pyramid computes what they need.
 	Status prepareRects(FrameInput &input, Pyramid &pyramid, FrameStats &stats,
 			    int firstRegion, bool sparse);
 	// Windows of level i inside region r not evaluated yet, appended to frameList_.
@@ -73,10 +69,12 @@ private:
 	int levels_ = 0;
 	bool levelNeeded_[kMaxLevels] = {};
 	RowBand levelRows_[kMaxLevels]; // the rows of each level its plausible windows read
-	RowBand noRows_[kMaxLevels];    // build()'s bands when rectangles come later
+	// Without rectangles, one demand per frame: those rows of the needed levels.
+	int bandLevels_[kMaxLevels] = {};
+	LevelRect bandRects_[kMaxLevels];
+	int bandCount_ = 0;
 	// Sparse-dense with computed levels that all come from the image itself (placed
-	// levels): build() computes nothing, and each pass has the pyramid computed in
-	// rectangles around what its windows read.
+	// levels): each pass demands the rectangles around what its windows read.
 	bool rectsPerFrame_ = false, rectsAllowed_ = false;
 	LevelRect levelRects_[kMaxLevels][Pyramid::kMaxRects];
 	int levelRectCount_[kMaxLevels] = {};

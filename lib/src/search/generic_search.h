@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// The generic method's search (Dollár's detector): every window of every pyramid level,
-// after Pyramid::build() computed all of it.
+// The generic method's search (Dollár's detector): the whole pyramid, and every window
+// of every level.
 #pragma once
 
 #include <calped/detector.h>
@@ -11,7 +11,7 @@
 
 namespace calped {
 
-void searchEveryWindow(Pyramid &pyramid, const Classifier &classifier, Candidates &out,
+Status searchEveryWindow(FrameInput &input, Pyramid &pyramid, const Classifier &classifier, Candidates &out,
 		       FrameStats &stats);
 
 } // namespace calped
