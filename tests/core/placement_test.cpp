@@ -23,7 +23,7 @@ ScaleList scalesOf(const ModelParams &p, int width, int height, double upscale)
 	return s;
 }
 
-void checkPlacement(const ScaleList &scales, const RowBand *bands, const int *source, int reach)
+void checkPlacement(const ScaleList &scales, const CellRange *bands, const int *source, int reach)
 {
 	for (int i = 0; i < scales.count; i++) {
 		const int s = source[i];
@@ -53,16 +53,16 @@ TEST(Placement, PetsLikeBandsComputeFarFewerPixels)
 	ModelParams p;
 	ScaleList scales = scalesOf(p, 768, 576, 2.0);
 	ASSERT_GE(scales.count, 20);
-	RowBand bands[kMaxLevels];
+	CellRange bands[kMaxLevels];
 	for (int i = 0; i < 16; i++) {
 		const int h = scales.levels[i].height;
-		bands[i] = RowBand{ h / 24 + i, h * 2 / 5 + 3 * i }.clipped(h);
+		bands[i] = CellRange{ h / 24 + i, h * 2 / 5 + 3 * i }.clipped(h);
 	}
 	const double octaves = computedPixels(p, scales, bands, kMargin);
 	int source[kMaxLevels];
-	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, toolboxReach(p), 768, 576, source));
+	ASSERT_TRUE(choosePlacedLevels(p, scales, bands, kMargin, toolboxReach(p), 768, 576, source));
 	checkPlacement(scales, bands, source, toolboxReach(p));
-	applyComputedLevels(scales, source);
+	applyPlacedLevels(scales, source);
 	const double placed = computedPixels(p, scales, bands, kMargin);
 	int computed = 0;
 	for (int i = 0; i < scales.count; i++)
@@ -73,9 +73,9 @@ TEST(Placement, PetsLikeBandsComputeFarFewerPixels)
 	EXPECT_LE(computed, 2);
 	// A longer reach can only find cheaper placements.
 	ScaleList wider = scalesOf(p, 768, 576, 2.0);
-	ASSERT_TRUE(chooseComputedLevels(p, wider, bands, kMargin, 5, 768, 576, source));
+	ASSERT_TRUE(choosePlacedLevels(p, wider, bands, kMargin, 5, 768, 576, source));
 	checkPlacement(wider, bands, source, 5);
-	applyComputedLevels(wider, source);
+	applyPlacedLevels(wider, source);
 	const double placed5 = computedPixels(p, wider, bands, kMargin);
 	std::printf("reach 5: %.2f M channel pixels\n", placed5 / 1e6);
 	EXPECT_LE(placed5, placed + 1024.0 * 2);
@@ -90,24 +90,24 @@ TEST(Placement, NeverMoreThanTheOctavesForRandomBands)
 	std::mt19937 rng(11);
 	for (int trial = 0; trial < 200; trial++) {
 		SCOPED_TRACE(trial);
-		RowBand bands[kMaxLevels];
+		CellRange bands[kMaxLevels];
 		for (int i = 0; i < base.count; i++) {
 			const int h = base.levels[i].height;
 			const int b = int(rng() % h), e = b + 1 + int(rng() % h);
-			bands[i] = rng() % 3 == 0 ? RowBand() : RowBand{ b, e };
+			bands[i] = rng() % 3 == 0 ? CellRange() : CellRange{ b, e };
 		}
 		int source[kMaxLevels];
 		// Any reach from the toolbox's up: the toolbox's placement is then one of those
 		// searched.
 		const int reach = toolboxReach(p) + int(rng() % 4);
-		if (!chooseComputedLevels(p, base, bands, kMargin, reach, 331, 247, source)) {
+		if (!choosePlacedLevels(p, base, bands, kMargin, reach, 331, 247, source)) {
 			for (int i = 0; i < base.count; i++)
 				ASSERT_TRUE(bands[i].clipped(base.levels[i].height).empty());
 			continue;
 		}
 		checkPlacement(base, bands, source, reach);
 		ScaleList placed = base;
-		applyComputedLevels(placed, source);
+		applyPlacedLevels(placed, source);
 		// The toolbox's placement is one of those searched; each computed level also
 		// counts 1024 pixels there, so fewer levels may win by that much.
 		EXPECT_LE(computedPixels(p, placed, bands, kMargin),
@@ -122,11 +122,11 @@ TEST(Placement, ComputedLevelsCanBeResampledFromTheImage)
 	ModelParams p;
 	const int width = 2000, height = 1500;
 	const ScaleList scales = scalesOf(p, width, height, 1.0);
-	RowBand bands[kMaxLevels];
+	CellRange bands[kMaxLevels];
 	for (int i = scales.count - 3; i < scales.count; i++)
-		bands[i] = RowBand{ 0, scales.levels[i].height };
+		bands[i] = CellRange{ 0, scales.levels[i].height };
 	int source[kMaxLevels];
-	ASSERT_TRUE(chooseComputedLevels(p, scales, bands, kMargin, 5, width, height, source));
+	ASSERT_TRUE(choosePlacedLevels(p, scales, bands, kMargin, 5, width, height, source));
 	checkPlacement(scales, bands, source, 5);
 	std::vector<kernels::ResampleTap> taps(size_t(width) + 8);
 	bool smallestComputable = true;
@@ -147,16 +147,16 @@ TEST(Placement, NothingNeededOrEveryLevelComputedKeepsTheToolbox)
 {
 	ModelParams p;
 	const ScaleList scales = scalesOf(p, 320, 240, 1.0);
-	RowBand none[kMaxLevels];
+	CellRange none[kMaxLevels];
 	int source[kMaxLevels];
-	EXPECT_FALSE(chooseComputedLevels(p, scales, none, kMargin, 5, 320, 240, source));
-	RowBand all[kMaxLevels];
+	EXPECT_FALSE(choosePlacedLevels(p, scales, none, kMargin, 5, 320, 240, source));
+	CellRange all[kMaxLevels];
 	for (int i = 0; i < scales.count; i++)
-		all[i] = RowBand{ 0, scales.levels[i].height };
+		all[i] = CellRange{ 0, scales.levels[i].height };
 	p.nApprox = 0;
-	EXPECT_FALSE(chooseComputedLevels(p, scales, all, kMargin, 5, 320, 240, source));
+	EXPECT_FALSE(choosePlacedLevels(p, scales, all, kMargin, 5, 320, 240, source));
 	p.nApprox = 7;
-	EXPECT_FALSE(chooseComputedLevels(p, scales, all, kMargin, 0, 320, 240, source)); // no reach
+	EXPECT_FALSE(choosePlacedLevels(p, scales, all, kMargin, 0, 320, 240, source)); // no reach
 }
 
 } // namespace

@@ -19,7 +19,7 @@ namespace {
 
 // Padded rows of a level that a band of level rows makes valid: the band's rows, and the
 // padding above or below only where the band reaches that edge of the level.
-void checkLevelRows(const LevelChannels &full, const LevelChannels &part, const RowBand &band,
+void checkLevelRows(const LevelChannels &full, const LevelChannels &part, const CellRange &band,
 		    int levelHeight, int padH, int level)
 {
 	ASSERT_EQ(full.paddedHeight, part.paddedHeight);
@@ -40,7 +40,7 @@ void checkLevelRows(const LevelChannels &full, const LevelChannels &part, const 
 
 // Random bands: empty, touching the top or bottom, one row, interior, beyond the level
 // (the pyramid clips it), whole level.
-void randomBands(std::mt19937 &rng, const ScaleList &scales, RowBand *bands)
+void randomBands(std::mt19937 &rng, const ScaleList &scales, CellRange *bands)
 {
 	for (int i = 0; i < scales.count; i++) {
 		const int h = scales.levels[i].height;
@@ -56,7 +56,7 @@ void randomBands(std::mt19937 &rng, const ScaleList &scales, RowBand *bands)
 			e = b + 1;
 		else if (kind == 4)
 			b = -3, e = h + 5;
-		bands[i] = RowBand{ b, e };
+		bands[i] = CellRange{ b, e };
 	}
 }
 
@@ -76,16 +76,16 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
 
 	std::mt19937 rng(seed);
-	RowBand bands[kMaxLevels];
+	CellRange bands[kMaxLevels];
 	randomBands(rng, scales, bands);
 	if (placed) {
 		// Both pyramids compute the levels placed for these bands.
 		int source[kMaxLevels];
-		ASSERT_TRUE(chooseComputedLevels(p, scales, bands, full.channelMargin(), 5, width, height,
+		ASSERT_TRUE(choosePlacedLevels(p, scales, bands, full.channelMargin(), 5, width, height,
 						 source));
-		ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
-		ASSERT_TRUE(banded.placeComputedLevels(source, scales.count).ok());
-		applyComputedLevels(scales, source);
+		ASSERT_TRUE(full.placeLevels(source, scales.count).ok());
+		ASSERT_TRUE(banded.placeLevels(source, scales.count).ok());
+		applyPlacedLevels(scales, source);
 	}
 	input.begin(image.view());
 	full.beginFrame();
@@ -99,7 +99,7 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 	for (int i = 0; i < scales.count; i++)
 		if (!bands[i].empty()) {
 			levels.push_back(i);
-			rects.push_back(LevelRect{ bands[i], RowBand{ 0, scales.levels[i].width } });
+			rects.push_back(LevelRect{ bands[i], CellRange{ 0, scales.levels[i].width } });
 		}
 	banded.beginFrame();
 	ASSERT_TRUE(banded.compute(input, PyramidDemand::of(levels.data(), rects.data(), int(rects.size()))).ok());
@@ -107,7 +107,7 @@ void compareBands(const std::vector<uint8_t> &rgb, int width, int height, uint32
 	EXPECT_LE(banded.computedCount, full.computedCount);
 
 	for (int i = 0; i < scales.count; i++) {
-		const RowBand band = bands[i].clipped(scales.levels[i].height);
+		const CellRange band = bands[i].clipped(scales.levels[i].height);
 		if (band.empty())
 			continue;
 		const LevelChannels part = banded.prepare(i); // each pyramid owns its level buffer
@@ -159,13 +159,13 @@ void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, u
 	ASSERT_TRUE(input.init(width, height, false).ok());
 	ScaleList scales;
 	ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
-	RowBand all[kMaxLevels];
+	CellRange all[kMaxLevels];
 	for (int i = 0; i < scales.count; i++)
-		all[i] = RowBand{ 0, scales.levels[i].height };
+		all[i] = CellRange{ 0, scales.levels[i].height };
 	int source[kMaxLevels];
-	ASSERT_TRUE(chooseComputedLevels(p, scales, all, full.channelMargin(), 5, width, height, source));
-	ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
-	ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
+	ASSERT_TRUE(choosePlacedLevels(p, scales, all, full.channelMargin(), 5, width, height, source));
+	ASSERT_TRUE(full.placeLevels(source, scales.count).ok());
+	ASSERT_TRUE(part.placeLevels(source, scales.count).ok());
 	ASSERT_TRUE(part.rectsComputable(width, height));
 	input.begin(image.view());
 	full.beginFrame();
@@ -188,7 +188,7 @@ void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, u
 			if (k == 2 && pass == 1)
 				c1 = w + 2, r0 = 0;
 			levels.push_back(i);
-			rects.push_back(LevelRect{ RowBand{ r0, r1 }, RowBand{ c0, c1 } });
+			rects.push_back(LevelRect{ CellRange{ r0, r1 }, CellRange{ c0, c1 } });
 		}
 		const long before = part.rectsComputed;
 		ASSERT_TRUE(part.compute(input, PyramidDemand::of(levels.data(), rects.data(), int(rects.size()))).ok());
@@ -198,7 +198,7 @@ void compareRectangles(const std::vector<uint8_t> &rgb, int width, int height, u
 		for (size_t k = 0; k < rects.size(); k++) {
 			const int i = levels[k];
 			const int h = scales.levels[i].height, w = scales.levels[i].width;
-			const RowBand rows = rects[k].rows.clipped(h), cols = rects[k].cols.clipped(w);
+			const CellRange rows = rects[k].rows.clipped(h), cols = rects[k].cols.clipped(w);
 			const LevelChannels a = full.prepare(i);
 			std::vector<uint16_t> expected(a.data, a.data + kChannelCount * a.planeStride);
 			const LevelRect read{ rows, cols };
@@ -246,7 +246,7 @@ TEST(PyramidBands, RectanglesMergeNearNeighbours)
 		std::vector<LevelRect> added;
 		for (int k = 0; k < 20; k++) {
 			const int r0 = int(rng() % 100), c0 = int(rng() % 100);
-			const LevelRect r{ RowBand{ r0, r0 + 1 + int(rng() % 10) }, RowBand{ c0, c0 + 1 + int(rng() % 10) } };
+			const LevelRect r{ CellRange{ r0, r0 + 1 + int(rng() % 10) }, CellRange{ c0, c0 + 1 + int(rng() % 10) } };
 			addMerged(set, count, 6, r, 2);
 			added.push_back(r);
 			ASSERT_LE(count, 6);
@@ -278,8 +278,8 @@ TEST(PyramidBands, ToolboxOctavesTakeOneDemandPerFrame)
 	ASSERT_TRUE(input.init(width, height, false).ok());
 	input.begin(ImageView::rgb8(rgb.data(), width, height));
 	const int level = 0;
-	const LevelRect rect{ RowBand{ 0, 5 }, RowBand{ 0, 5 } }, inside{ RowBand{ 1, 4 }, RowBand{ 2, 9 } },
-			outside{ RowBand{ 6, 9 }, RowBand{ 0, 5 } };
+	const LevelRect rect{ CellRange{ 0, 5 }, CellRange{ 0, 5 } }, inside{ CellRange{ 1, 4 }, CellRange{ 2, 9 } },
+			outside{ CellRange{ 6, 9 }, CellRange{ 0, 5 } };
 	pyr.beginFrame();
 	ASSERT_TRUE(pyr.compute(input, PyramidDemand::of(&level, &rect, 1)).ok());
 	EXPECT_GT(pyr.computedCount, 0);
@@ -300,14 +300,14 @@ TEST(PyramidBands, PlacementIsCheckedAndSizedForTheMaximumFrame)
 	int source[kMaxLevels];
 	for (int i = 0; i < scales.count; i++)
 		source[i] = 1; // every level from level 1, computed
-	EXPECT_TRUE(pyr.placeComputedLevels(source, scales.count).ok());
+	EXPECT_TRUE(pyr.placeLevels(source, scales.count).ok());
 	source[1] = 0; // level 1 from level 0, which is not computed
-	EXPECT_EQ(pyr.placeComputedLevels(source, scales.count).code(), ErrorCode::InvalidArgument);
-	EXPECT_EQ(pyr.placeComputedLevels(source, scales.count + 1).code(), ErrorCode::InvalidArgument);
+	EXPECT_EQ(pyr.placeLevels(source, scales.count).code(), ErrorCode::InvalidArgument);
+	EXPECT_EQ(pyr.placeLevels(source, scales.count + 1).code(), ErrorCode::InvalidArgument);
 	// Every level computed: the channel store grows at setup to hold them all.
 	for (int i = 0; i < scales.count; i++)
 		source[i] = i;
-	ASSERT_TRUE(pyr.placeComputedLevels(source, scales.count).ok());
+	ASSERT_TRUE(pyr.placeLevels(source, scales.count).ok());
 	const std::vector<uint8_t> rgb = test::randomImage(4, 200, 150);
 	ASSERT_TRUE(pyr.compute(rgb.data(), 3 * 200, 200, 150).ok());
 	EXPECT_EQ(pyr.computedCount, scales.count);
@@ -331,15 +331,15 @@ TEST(PyramidBands, ColumnRangesEqualTheFullLevel)
 		ASSERT_TRUE(part.init(p, width, height).ok());
 		ScaleList scales;
 		ASSERT_TRUE(full.scalesFor(width, height, scales).ok());
-		RowBand all[kMaxLevels];
+		CellRange all[kMaxLevels];
 		for (int i = 0; i < scales.count; i++)
-			all[i] = RowBand{ 0, scales.levels[i].height };
+			all[i] = CellRange{ 0, scales.levels[i].height };
 		if (placed) {
 			int source[kMaxLevels];
-			ASSERT_TRUE(chooseComputedLevels(p, scales, all, full.channelMargin(), 5, width,
+			ASSERT_TRUE(choosePlacedLevels(p, scales, all, full.channelMargin(), 5, width,
 							 height, source));
-			ASSERT_TRUE(full.placeComputedLevels(source, scales.count).ok());
-			ASSERT_TRUE(part.placeComputedLevels(source, scales.count).ok());
+			ASSERT_TRUE(full.placeLevels(source, scales.count).ok());
+			ASSERT_TRUE(part.placeLevels(source, scales.count).ok());
 		}
 		ASSERT_TRUE(full.compute(rgb.data(), 3 * width, width, height).ok());
 		ASSERT_TRUE(part.compute(rgb.data(), 3 * width, width, height).ok());
@@ -353,7 +353,7 @@ TEST(PyramidBands, ColumnRangesEqualTheFullLevel)
 					c0 = 0; // touching the left side
 				if (trial == 2)
 					c1 = w, r0 = 0; // the right side and the top
-				const RowBand rows{ r0, r1 }, cols{ c0, c1 };
+				const CellRange rows{ r0, r1 }, cols{ c0, c1 };
 				const LevelChannels a = full.prepare(i);
 				std::vector<uint16_t> expected(a.data, a.data + kChannelCount * a.planeStride);
 				const LevelRect read{ rows, cols };

@@ -11,21 +11,21 @@ namespace calped {
 namespace {
 
 // The raw channel rows of level i its band needs (the pyramid smoothing reaches a row).
-RowBand rawRows(const ModelParams &p, const PyramidLevel &l, const RowBand &band)
+CellRange rawRows(const ModelParams &p, const PyramidLevel &l, const CellRange &band)
 {
 	return band.clipped(l.height).grown(p.pyramidSmooth > 0 ? 1 : 0, l.height);
 }
 
 // Channel pixels of level r computed for the needed levels in [a, b) approximated from it
 // (and its own band), as Pyramid::planRows would plan them.
-double groupPixels(const ModelParams &p, const ScaleList &scales, const RowBand *levelRows,
+double groupPixels(const ModelParams &p, const ScaleList &scales, const CellRange *levelRows,
 		   int channelMargin, int r, int a, int b, std::vector<kernels::ResampleTap> &taps)
 {
 	const PyramidLevel &real = scales.levels[r];
-	RowBand raw;
+	CellRange raw;
 	for (int i = a; i < b; i++) {
 		const PyramidLevel &l = scales.levels[i];
-		const RowBand need = rawRows(p, l, levelRows[i]);
+		const CellRange need = rawRows(p, l, levelRows[i]);
 		if (need.empty())
 			continue;
 		if (i == r) {
@@ -37,7 +37,7 @@ double groupPixels(const ModelParams &p, const ScaleList &scales, const RowBand 
 	}
 	if (raw.empty())
 		return 0;
-	const RowBand chan = RowBand{ 4 * raw.begin - channelMargin, 4 * raw.end + channelMargin }
+	const CellRange chan = CellRange{ 4 * raw.begin - channelMargin, 4 * raw.end + channelMargin }
 				     .clipped(4 * real.height);
 	return double(chan.size()) * 4.0 * real.width;
 }
@@ -46,7 +46,7 @@ double groupPixels(const ModelParams &p, const ScaleList &scales, const RowBand 
 
 int toolboxReach(const ModelParams &p) { return (p.nApprox + 2) / 2; }
 
-bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales, const RowBand *levelRows,
+bool choosePlacedLevels(const ModelParams &p, const ScaleList &scales, const CellRange *levelRows,
 			  int channelMargin, int reach, int imageWidth, int imageHeight, int *source)
 {
 	const int n = scales.count;
@@ -124,7 +124,7 @@ bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales, const R
 	return true;
 }
 
-void applyComputedLevels(ScaleList &scales, const int *source)
+void applyPlacedLevels(ScaleList &scales, const int *source)
 {
 	for (int i = 0; i < scales.count; i++) {
 		scales.levels[i].computed = source[i] == i;
@@ -132,21 +132,21 @@ void applyComputedLevels(ScaleList &scales, const int *source)
 	}
 }
 
-double computedPixels(const ModelParams &p, const ScaleList &scales, const RowBand *levelRows,
+double computedPixels(const ModelParams &p, const ScaleList &scales, const CellRange *levelRows,
 		      int channelMargin)
 {
 	size_t most = 8;
 	for (int i = 0; i < scales.count; i++)
 		most = std::max(most, size_t(scales.levels[i].height) + 8);
 	std::vector<kernels::ResampleTap> taps(most);
-	std::vector<RowBand> served(size_t(scales.count));
+	std::vector<CellRange> served(size_t(scales.count));
 	double total = 0;
 	for (int r = 0; r < scales.count; r++) {
 		if (!scales.levels[r].computed)
 			continue;
 		// Only the bands of the levels approximated from r (and its own).
 		for (int i = 0; i < scales.count; i++)
-			served[i] = scales.levels[i].source == r ? levelRows[i] : RowBand();
+			served[i] = scales.levels[i].source == r ? levelRows[i] : CellRange();
 		total += groupPixels(p, scales, served.data(), channelMargin, r, 0, scales.count, taps);
 	}
 	return total;

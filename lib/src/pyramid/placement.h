@@ -10,7 +10,7 @@
 
 #include <calped/model.h>
 
-#include "pyramid/row_band.h"
+#include "pyramid/cell_range.h"
 #include "pyramid/scales.h"
 
 namespace calped {
@@ -28,16 +28,16 @@ int toolboxReach(const ModelParams &p);
 // from the imageWidth x imageHeight image in one step. False, and nothing written, when
 // no level is needed, the model computes every level (nApprox = 0) or some needed level
 // has no computable level within reach. Allocates (setup time only).
-bool chooseComputedLevels(const ModelParams &p, const ScaleList &scales,
-			  const RowBand *levelRows, int channelMargin, int reach, int imageWidth,
+bool choosePlacedLevels(const ModelParams &p, const ScaleList &scales,
+			  const CellRange *levelRows, int channelMargin, int reach, int imageWidth,
 			  int imageHeight, int *source);
 
-// Mark the computed levels and sources of `scales` as chooseComputedLevels() gave them.
-void applyComputedLevels(ScaleList &scales, const int *source);
+// Mark the computed levels and sources of `scales` as choosePlacedLevels() gave them.
+void applyPlacedLevels(ScaleList &scales, const int *source);
 
 // Channel pixels (LUV rows x width) the computed levels of `scales` need for these
 // bands, computed levels as marked in `scales` with their sources; for comparisons.
-double computedPixels(const ModelParams &p, const ScaleList &scales, const RowBand *levelRows,
+double computedPixels(const ModelParams &p, const ScaleList &scales, const CellRange *levelRows,
 		      int channelMargin);
 
 } // namespace calped

@@ -203,11 +203,11 @@ Status Pyramid::scalesFor(int width, int height, ScaleList &out) const
 				     "%dx%d is smaller than the model's minimum %gx%g", width, height,
 				     double(params_.minDsW), double(params_.minDsH));
 	if (placedCount_ > 0 && width == maxWidth_ && height == maxHeight_ && out.count == placedCount_)
-		applyComputedLevels(out, placedSource_);
+		applyPlacedLevels(out, placedSource_);
 	return Status::success();
 }
 
-Status Pyramid::placeComputedLevels(const int *source, int count)
+Status Pyramid::placeLevels(const int *source, int count)
 {
 	placedCount_ = 0;
 	ScaleList scales;
@@ -224,7 +224,7 @@ Status Pyramid::placeComputedLevels(const int *source, int count)
 					     "level %d is approximated from level %d, which is not computed",
 					     i, s);
 	}
-	applyComputedLevels(scales, source);
+	applyPlacedLevels(scales, source);
 	// The channel store holds every computed level, each in its place.
 	size_t need = 0;
 	for (int i = 0; i < count; i++)
@@ -251,7 +251,7 @@ Status Pyramid::placeComputedLevels(const int *source, int count)
 	return Status::success();
 }
 
-void Pyramid::planRows(const RowBand *levelRows, int width, int height)
+void Pyramid::planRows(const CellRange *levelRows, int width, int height)
 {
 	const int n = scales_.count;
 	for (int i = 0; i < n; i++)
@@ -261,8 +261,8 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 	for (int i = 0; i < n; i++) {
 		const PyramidLevel &l = scales_.levels[i];
 		LevelRows &r = rows_[i];
-		const RowBand wanted = levelRows ? levelRows[i].clipped(l.height) : RowBand{ 0, l.height };
-		const RowBand raw = wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
+		const CellRange wanted = levelRows ? levelRows[i].clipped(l.height) : CellRange{ 0, l.height };
+		const CellRange raw = wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
 		r.raw.add(raw);
 		if (!l.computed && !raw.empty()) {
 			// Which source rows the taps read does not depend on their gain.
@@ -278,15 +278,15 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 		if (!l.computed)
 			continue;
 		LevelRows &r = rows_[i];
-		r.chan = RowBand{ 4 * r.raw.begin - channelMargin_, 4 * r.raw.end + channelMargin_ }
+		r.chan = CellRange{ 4 * r.raw.begin - channelMargin_, 4 * r.raw.end + channelMargin_ }
 				 .clipped(4 * l.height);
 		if (r.raw.empty())
-			r.chan = RowBand();
+			r.chan = CellRange();
 		r.luv = r.chan;
 	}
 	// Sources, smallest first: octaves below the half-size image are resampled from it
 	// (as the toolbox does), the others from the whole image.
-	fullRows_ = RowBand();
+	fullRows_ = CellRange();
 	for (int i = n - 1; i >= 0; i--) {
 		const PyramidLevel &l = scales_.levels[i];
 		const LevelRows &r = rows_[i];
@@ -301,7 +301,7 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 		const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
 		if (!taps)
 			continue; // computeBands() reports it
-		const RowBand src = sourceRows(taps, r.luv);
+		const CellRange src = sourceRows(taps, r.luv);
 		if (fromHalf)
 			rows_[halfLevel_].luv.add(src);
 		else
@@ -313,12 +313,12 @@ void Pyramid::planRows(const RowBand *levelRows, int width, int height)
 }
 
 void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *dst, int planes,
-			   const kernels::ResampleTap *const *yTaps, const RowBand &rows,
-			   const kernels::ResampleTap *xTaps, const RowBand *cols)
+			   const kernels::ResampleTap *const *yTaps, const CellRange &rows,
+			   const kernels::ResampleTap *xTaps, const CellRange *cols)
 {
 	// The planes share their source rows (the channel types' gains scale the weights
 	// only), so one band of them serves every plane; each distinct yTaps is shifted once.
-	RowBand srcRows;
+	CellRange srcRows;
 	for (int p = 0; p < planes; p++)
 		srcRows.add(sourceRows(yTaps[p], rows));
 	const size_t bandTaps = yTapsBand_.size() / kMaxTapSets;
@@ -326,7 +326,7 @@ void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *ds
 	int sets = 0;
 	kernels::PlaneJob jobs[kChannelCount];
 	// Each output column depends only on its own taps, so a range of them is exact.
-	const RowBand c = cols ? *cols : RowBand{ 0, dst[0].width };
+	const CellRange c = cols ? *cols : CellRange{ 0, dst[0].width };
 	for (int p = 0; p < planes; p++) {
 		int set = 0;
 		while (set < sets && shiftedFrom[set] != yTaps[p])
@@ -344,7 +344,7 @@ void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *ds
 			   xTaps + c.begin, tmp.data, tmp.stride);
 }
 
-Status Pyramid::computeBands(FrameInput &input, const RowBand *levelRows)
+Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 {
 	const auto t0 = Clock::now();
 	const int width = input.width(), height = input.height();
@@ -364,8 +364,8 @@ Status Pyramid::computeBands(FrameInput &input, const RowBand *levelRows)
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width, height);
 	// Only the rows some level reads.
-	const RowBand luvRows = fullRows_;
-	fullRows_ = RowBand();
+	const CellRange luvRows = fullRows_;
+	fullRows_ = CellRange();
 	convertLuvRows(input, luvRows);
 
 	// Computed levels, from the largest: each is resampled from the whole image, or
@@ -436,7 +436,7 @@ Status Pyramid::compute(FrameInput &input, const PyramidDemand &demand)
 	if (first) {
 		// Nothing computed yet; then the rectangles, where the levels allow.
 		for (int i = 0; i < kMaxLevels; i++)
-			demandBands_[i] = RowBand();
+			demandBands_[i] = CellRange();
 		const Status st = computeBands(input, demandBands_);
 		if (!st.ok() || halfLevel_ < 0)
 			return st.ok() ? computeRects(input, demand.levels, demand.rects, demand.count) : st;
@@ -474,7 +474,7 @@ bool Pyramid::rectsComputable(int width, int height) const
 	return scalesFor(width, height, scales).ok() && halfLevelOf(params_, scales) < 0;
 }
 
-Status Pyramid::levelColour(FrameInput &input, int i, const RowBand &chan, const RowBand &chanCols,
+Status Pyramid::levelColour(FrameInput &input, int i, const CellRange &chan, const CellRange &chanCols,
 			   Plane<uint16_t> in[3])
 {
 	const PyramidLevel &l = scales_.levels[i];
@@ -524,7 +524,7 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
 			if (!xTaps)
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-			const RowBand cols = sourceRows(xTaps, raw.cols);
+			const CellRange cols = sourceRows(xTaps, raw.cols);
 			const kernels::ResampleTap *yTaps = levelTaps(i, kTapsY);
 			if (!yTaps)
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
@@ -556,9 +556,9 @@ Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r)
 	const int w1 = l.width * 4, h1 = l.height * 4;
 	// The colour pixels with the channels' margin on every side (whole cells), computed
 	// into the approximation buffer (free between levels); only r is kept.
-	const RowBand chan = RowBand{ 4 * r.rows.begin - channelMargin_, 4 * r.rows.end + channelMargin_ }
+	const CellRange chan = CellRange{ 4 * r.rows.begin - channelMargin_, 4 * r.rows.end + channelMargin_ }
 				     .clipped(h1);
-	const RowBand chanCols = RowBand{ 4 * r.cols.begin - channelMargin_, 4 * r.cols.end + channelMargin_ }
+	const CellRange chanCols = CellRange{ 4 * r.cols.begin - channelMargin_, 4 * r.cols.end + channelMargin_ }
 					 .clipped(w1);
 	Plane<uint16_t> in[3];
 	const Status st = levelColour(input, i, chan, chanCols, in);
@@ -591,7 +591,7 @@ Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r)
 	return Status::success();
 }
 
-void Pyramid::convertLuvRows(FrameInput &input, RowBand rows)
+void Pyramid::convertLuvRows(FrameInput &input, CellRange rows)
 {
 	rows = rows.clipped(height_);
 	if (rows.empty() || fullRows_.contains(rows))
@@ -602,10 +602,10 @@ void Pyramid::convertLuvRows(FrameInput &input, RowBand rows)
 	// The rows above and below those converted, a strip of RGB rows at a time (the
 	// whole band at once when the frame is RGB8 already); strips start on even rows
 	// (4:2:0 chroma).
-	const RowBand parts[2] = { fullRows_.empty() ? rows : RowBand{ rows.begin, fullRows_.begin },
-				   fullRows_.empty() ? RowBand() : RowBand{ fullRows_.end, rows.end } };
+	const CellRange parts[2] = { fullRows_.empty() ? rows : CellRange{ rows.begin, fullRows_.begin },
+				   fullRows_.empty() ? CellRange() : CellRange{ fullRows_.end, rows.end } };
 	const int strip = input.stripRows();
-	for (const RowBand &part : parts) {
+	for (const CellRange &part : parts) {
 		if (part.empty())
 			continue;
 		for (int y0 = part.begin & ~1; y0 < part.end; y0 += strip) {
@@ -625,7 +625,7 @@ void Pyramid::realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount])
 	planesAt(computedStore_.data() + realOffset_[i], l.width, l.height, out);
 }
 
-void Pyramid::approximate(int i, const RowBand &rows, const RowBand &cols,
+void Pyramid::approximate(int i, const CellRange &rows, const CellRange &cols,
 			  Plane<uint16_t> out[kChannelCount])
 {
 	const PyramidLevel &l = scales_.levels[i];
@@ -645,15 +645,15 @@ void Pyramid::approximate(int i, const RowBand &rows, const RowBand &cols,
 		resampleRows(src, out, kChannelCount, yTaps, rows, xTaps, &cols);
 }
 
-LevelChannels Pyramid::prepareRect(int i, const RowBand *only, const RowBand *onlyCols)
+LevelChannels Pyramid::prepareRect(int i, const CellRange *only, const CellRange *onlyCols)
 {
 	const PyramidLevel &l = scales_.levels[i];
 	const int reach = params_.pyramidSmooth > 0 ? 1 : 0;
 	// Smoothing the raw band is exact in the wanted rows (it reaches one row further);
 	// padding above or below the level exists only where the band touches that edge.
-	RowBand band = rows_[i].raw;
+	CellRange band = rows_[i].raw;
 	if (only) {
-		const RowBand wanted = *only;
+		const CellRange wanted = *only;
 		band = wanted.grown(reach, l.height);
 		if (!rows_[i].raw.contains(band))
 			band = rows_[i].raw; // outside what was computed: keep its band
@@ -661,7 +661,7 @@ LevelChannels Pyramid::prepareRect(int i, const RowBand *only, const RowBand *on
 	// The same across: columns one wider than those wanted (the smoothing treats the ends
 	// of the range as the level's edges, so only the wanted columns are exact), padding
 	// beside the level only where the range touches that side.
-	const RowBand cols = onlyCols ? onlyCols->grown(reach, l.width) : RowBand{ 0, l.width };
+	const CellRange cols = onlyCols ? onlyCols->grown(reach, l.width) : CellRange{ 0, l.width };
 	Plane<uint16_t> raw[kChannelCount];
 	if (l.computed) {
 		realLevelPlanes(i, raw);

@@ -12,7 +12,7 @@
 #include "input/frame_input.h"
 #include "core/plane.h"
 #include "kernels.h"
-#include "pyramid/row_band.h"
+#include "pyramid/cell_range.h"
 #include "pyramid/scales.h"
 
 namespace calped {
@@ -90,7 +90,7 @@ public:
 	// source[i] is the computed level that level i is approximated from (i itself when
 	// computed), for the scale list of maxWidth x maxHeight images; other sizes keep
 	// the toolbox's. Setup time: may grow the channel store.
-	Status placeComputedLevels(const int *source, int count);
+	Status placeLevels(const int *source, int count);
 	// LUV rows a computed level's channels need beyond its channel rows (each side).
 	int channelMargin() const { return channelMargin_; }
 
@@ -116,26 +116,26 @@ public:
 private:
 	// Full-width bands of every level (levelRows: one per level, rows before padding;
 	// null: whole levels): the frame's colour and computed levels there, from scratch.
-	Status computeBands(FrameInput &input, const RowBand *levelRows);
+	Status computeBands(FrameInput &input, const CellRange *levelRows);
 	// After computeBands(), the rectangles of a demand not computed yet this frame.
 	Status computeRects(FrameInput &input, const int *levels, const LevelRect *rects, int count);
 	// Level i smoothed and padded in rows `only` and columns `onlyCols` of what was
 	// computed (null: all of it).
-	LevelChannels prepareRect(int i, const RowBand *only, const RowBand *onlyCols);
+	LevelChannels prepareRect(int i, const CellRange *only, const CellRange *onlyCols);
 
 	// The rows each stage must produce for the bands the classifier needs.
 	struct LevelRows {
-		RowBand raw;    // raw channel rows (those the classifier reads plus the smoothing's reach)
-		RowBand chan;   // computed levels: rows of the level's LUV image fed to the channels
-		RowBand luv;    // computed levels: rows of its LUV image that must exist (chan, and
+		CellRange raw;    // raw channel rows (those the classifier reads plus the smoothing's reach)
+		CellRange chan;   // computed levels: rows of the level's LUV image fed to the channels
+		CellRange luv;    // computed levels: rows of its LUV image that must exist (chan, and
 				// for the half-size image the rows smaller octaves resample)
 	};
-	void planRows(const RowBand *levelRows, int width, int height);
+	void planRows(const CellRange *levelRows, int width, int height);
 	// dst[p]'s `rows` from src[p], in all of their columns or only in `cols`, for planes
 	// of one size sharing xTaps; yTaps[p] holds at most kMaxTapSets distinct pointers.
 	void resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *dst, int planes,
-			  const kernels::ResampleTap *const *yTaps, const RowBand &rows,
-			  const kernels::ResampleTap *xTaps, const RowBand *cols = nullptr);
+			  const kernels::ResampleTap *const *yTaps, const CellRange &rows,
+			  const kernels::ResampleTap *xTaps, const CellRange *cols = nullptr);
 	static constexpr int kMaxTapSets = 3; // the channel types' gains
 
 	// Resampling taps of level i: across (kTapsX) and down (kTapsY, the first channel
@@ -155,10 +155,10 @@ private:
 	Status computeRect(FrameInput &input, int i, const LevelRect &r);
 	// The colour rows `chan` of computed level i's image, in columns `chanCols`: the
 	// whole image's (converted if need be), or resampled from them into levelLuv_.
-	Status levelColour(FrameInput &input, int i, const RowBand &chan, const RowBand &chanCols,
+	Status levelColour(FrameInput &input, int i, const CellRange &chan, const CellRange &chanCols,
 			   Plane<uint16_t> in[3]);
-	void convertLuvRows(FrameInput &input, RowBand rows);
-	void approximate(int i, const RowBand &rows, const RowBand &cols,
+	void convertLuvRows(FrameInput &input, CellRange rows);
+	void approximate(int i, const CellRange &rows, const CellRange &cols,
 			 Plane<uint16_t> out[kChannelCount]);
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
 
@@ -176,14 +176,14 @@ private:
 	int doneNext_[kMaxLevels] = {};
 	LevelRect needRects_[kMaxLevels][kMaxRects];
 	int needCount_[kMaxLevels] = {};
-	RowBand fullRows_; // rows of the whole-image LUV planes the levels read
+	CellRange fullRows_; // rows of the whole-image LUV planes the levels read
 	int halfLevel_ = -1; // the computed level at scale 1/2, source of smaller octaves
 	int frameDemands_ = 0; // compute() calls since beginFrame()
-	RowBand demandBands_[kMaxLevels]; // a band frame's demand, as rows per level
+	CellRange demandBands_[kMaxLevels]; // a band frame's demand, as rows per level
 	int channelMargin_ = 8;
 	int width_ = 0, height_ = 0;
 	int maxWidth_ = 0, maxHeight_ = 0;
-	// placeComputedLevels(): sources for the maximum frame size's levels, if set.
+	// placeLevels(): sources for the maximum frame size's levels, if set.
 	int placedCount_ = 0;
 	int placedSource_[kMaxLevels] = {};
 	int padH_ = 0, padW_ = 0;

@@ -13,13 +13,13 @@ namespace {
 
 // Rows of a level (before padding) read by windows in rows firstRow..lastRow: a window at
 // row r reads padded rows [r * step, r * step + model height).
-RowBand windowRowsRead(const ModelParams &p, int padH, int firstRow, int lastRow, int height)
+CellRange windowRowsRead(const ModelParams &p, int padH, int firstRow, int lastRow, int height)
 {
 	if (lastRow < firstRow)
-		return RowBand();
+		return CellRange();
 	const int step = p.stride / p.shrink;
 	const int windowRows = p.modelDsPadH / p.shrink;
-	return RowBand{ firstRow * step - padH, lastRow * step + windowRows - padH }.clipped(height);
+	return CellRange{ firstRow * step - padH, lastRow * step + windowRows - padH }.clipped(height);
 }
 
 } // namespace
@@ -97,12 +97,12 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 	return Status::success();
 }
 
-RowBand CalibratedPlan::rowsOfWindowRows(int i, int firstRow, int lastRow) const
+CellRange CalibratedPlan::rowsOfWindowRows(int i, int firstRow, int lastRow) const
 {
 	return windowRowsRead(params_, padH_, firstRow, lastRow, scales_.levels[i].height);
 }
 
-RowBand CalibratedPlan::rowsRead(int i, const uint32_t *windows, size_t count) const
+CellRange CalibratedPlan::rowsRead(int i, const uint32_t *windows, size_t count) const
 {
 	int firstRow = rows_[i], lastRow = -1;
 	for (size_t k = 0; k < count; k++) {
@@ -113,7 +113,7 @@ RowBand CalibratedPlan::rowsRead(int i, const uint32_t *windows, size_t count) c
 	return windowRowsRead(params_, padH_, firstRow, lastRow, scales_.levels[i].height);
 }
 
-RowBand CalibratedPlan::colsRead(int i, const uint32_t *windows, size_t count) const
+CellRange CalibratedPlan::colsRead(int i, const uint32_t *windows, size_t count) const
 {
 	int firstCol = cols_[i], lastCol = -1;
 	for (size_t k = 0; k < count; k++) {
@@ -124,14 +124,14 @@ RowBand CalibratedPlan::colsRead(int i, const uint32_t *windows, size_t count) c
 	return windowColsRead(i, firstCol, lastCol);
 }
 
-RowBand CalibratedPlan::windowColsRead(int i, int firstCol, int lastCol) const
+CellRange CalibratedPlan::windowColsRead(int i, int firstCol, int lastCol) const
 {
 	if (lastCol < firstCol)
-		return RowBand();
+		return CellRange();
 	// A window at column c reads padded columns [c * step, c * step + model width).
 	const int step = params_.stride / params_.shrink;
 	const int windowCols = params_.modelDsPadW / params_.shrink;
-	return RowBand{ firstCol * step - padW_, lastCol * step + windowCols - padW_ }.clipped(
+	return CellRange{ firstCol * step - padW_, lastCol * step + windowCols - padW_ }.clipped(
 		scales_.levels[i].width);
 }
 

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "pyramid/row_band.h"
+#include "pyramid/cell_range.h"
 #include "pyramid/scales.h"
 #include "search/window_boxes.h"
 
@@ -31,13 +31,13 @@ public:
 	bool levelNeeded(int i) const { return first_[i + 1] > first_[i]; }
 	// The rows of level i (before padding) that its plausible windows read; empty when
 	// the level has none.
-	RowBand levelRows(int i) const { return levelRows_[i]; }
+	CellRange levelRows(int i) const { return levelRows_[i]; }
 	// The rows of level i that windows in window rows firstRow..lastRow read.
-	RowBand rowsOfWindowRows(int i, int firstRow, int lastRow) const;
+	CellRange rowsOfWindowRows(int i, int firstRow, int lastRow) const;
 	// The rows of level i that these windows (row << 16 | column) read.
-	RowBand rowsRead(int i, const uint32_t *windows, size_t count) const;
+	CellRange rowsRead(int i, const uint32_t *windows, size_t count) const;
 	// The columns of level i (before padding) that they read, as a range.
-	RowBand colsRead(int i, const uint32_t *windows, size_t count) const;
+	CellRange colsRead(int i, const uint32_t *windows, size_t count) const;
 	// The cells (rows and columns of level i before padding) that the windows of rows
 	// firstRow..lastRow and columns firstCol..lastCol read.
 	LevelRect windowsRect(int i, int firstRow, int lastRow, int firstCol, int lastCol) const;
@@ -75,7 +75,7 @@ public:
 			   int &c1) const;
 
 private:
-	RowBand windowColsRead(int i, int firstCol, int lastCol) const;
+	CellRange windowColsRead(int i, int firstCol, int lastCol) const;
 	ModelParams params_;
 	WindowBoxes boxes_;
 	ScaleList scales_;
@@ -86,7 +86,7 @@ private:
 	size_t first_[kMaxLevels + 1] = {}, sparseFirst_[kMaxLevels + 1] = {};
 	size_t gridFirst_[kMaxLevels + 1] = {};
 	int rows_[kMaxLevels] = {}, cols_[kMaxLevels] = {};
-	RowBand levelRows_[kMaxLevels];
+	CellRange levelRows_[kMaxLevels];
 	int padH_ = 0, padW_ = 0;
 };
 

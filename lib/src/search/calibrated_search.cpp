@@ -44,14 +44,14 @@ Status CalibratedSearch::init(const CameraModel &camera, const ModelParams &para
 		sparseCount_[i] = plan_.sparseCount(i);
 		if (!levelRows_[i].empty()) {
 			bandLevels_[bandCount_] = i;
-			bandRects_[bandCount_++] = LevelRect{ levelRows_[i], RowBand{ 0, 1 << 30 } };
+			bandRects_[bandCount_++] = LevelRect{ levelRows_[i], CellRange{ 0, 1 << 30 } };
 		}
 	}
 	if (settings.levels == PyramidLevels::Placed) {
 		int source[kMaxLevels];
-		if (chooseComputedLevels(params, scales, levelRows_, pyramid.channelMargin(),
+		if (choosePlacedLevels(params, scales, levelRows_, pyramid.channelMargin(),
 					 settings.placedLevelReach, frameW, frameH, source)) {
-			st = pyramid.placeComputedLevels(source, scales.count);
+			st = pyramid.placeLevels(source, scales.count);
 			if (!st.ok())
 				return st;
 		}

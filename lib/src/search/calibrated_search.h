@@ -68,7 +68,7 @@ private:
 	CalibratedPlan plan_;
 	int levels_ = 0;
 	bool levelNeeded_[kMaxLevels] = {};
-	RowBand levelRows_[kMaxLevels]; // the rows of each level its plausible windows read
+	CellRange levelRows_[kMaxLevels]; // the rows of each level its plausible windows read
 	// Without rectangles, one demand per frame: those rows of the needed levels.
 	int bandLevels_[kMaxLevels] = {};
 	LevelRect bandRects_[kMaxLevels];

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Half-open ranges of rows. The calibrated mode needs each pyramid level only in the
-// rows where a plausible pedestrian can stand; the pyramid follows those ranges back
-// through smoothing, approximation, channel computation and resampling, so it computes
-// no row nobody reads (and every row it keeps is bit-identical to a full computation).
+// Half-open ranges of a level's rows or columns (cells, or pixels of a level's image),
+// and rectangles of them. The calibrated method needs each pyramid level only where a
+// plausible pedestrian can stand; the pyramid follows these ranges back through
+// smoothing, approximation, channel computation and resampling, so it computes nothing
+// nobody reads (and everything it keeps is bit-identical to a full computation).
 #pragma once
 
 #include <algorithm>
@@ -11,15 +12,15 @@
 
 namespace calped {
 
-struct RowBand {
+struct CellRange {
 	int begin = 0;
 	int end = 0;
 
 	bool empty() const { return end <= begin; }
 	int size() const { return end - begin; }
-	bool contains(const RowBand &o) const { return o.empty() || (begin <= o.begin && o.end <= end); }
+	bool contains(const CellRange &o) const { return o.empty() || (begin <= o.begin && o.end <= end); }
 	// The smallest band holding both.
-	void add(const RowBand &o)
+	void add(const CellRange &o)
 	{
 		if (o.empty())
 			return;
@@ -31,25 +32,25 @@ struct RowBand {
 		end = std::max(end, o.end);
 	}
 	// The rows in both.
-	RowBand intersected(const RowBand &o) const
+	CellRange intersected(const CellRange &o) const
 	{
-		RowBand b{ std::max(begin, o.begin), std::min(end, o.end) };
-		return b.empty() ? RowBand{} : b;
+		CellRange b{ std::max(begin, o.begin), std::min(end, o.end) };
+		return b.empty() ? CellRange{} : b;
 	}
-	RowBand clipped(int rows) const
+	CellRange clipped(int rows) const
 	{
-		RowBand b{ std::max(begin, 0), std::min(end, rows) };
-		return b.empty() ? RowBand{} : b;
+		CellRange b{ std::max(begin, 0), std::min(end, rows) };
+		return b.empty() ? CellRange{} : b;
 	}
-	RowBand grown(int margin, int rows) const
+	CellRange grown(int margin, int rows) const
 	{
-		return empty() ? RowBand{} : RowBand{ begin - margin, end + margin }.clipped(rows);
+		return empty() ? CellRange{} : CellRange{ begin - margin, end + margin }.clipped(rows);
 	}
 };
 
 // A rectangle of a level: its rows and its columns (cells, before padding).
 struct LevelRect {
-	RowBand rows, cols;
+	CellRange rows, cols;
 
 	bool empty() const { return rows.empty() || cols.empty(); }
 	bool contains(const LevelRect &o) const
@@ -108,17 +109,17 @@ inline void addMerged(LevelRect *set, int &count, int capacity, LevelRect r, int
 }
 
 // The source rows that resampling reads to produce output rows `out`.
-inline RowBand sourceRows(const kernels::ResampleTap *taps, const RowBand &out)
+inline CellRange sourceRows(const kernels::ResampleTap *taps, const CellRange &out)
 {
-	RowBand src;
+	CellRange src;
 	for (int o = out.begin; o < out.end; o++)
-		src.add(RowBand{ taps[o].first, taps[o].first + taps[o].count });
+		src.add(CellRange{ taps[o].first, taps[o].first + taps[o].count });
 	return src;
 }
 
 // taps[out.begin, out.end) with their first sample counted from row srcBegin, so the
 // resampler can run on the band alone: output row k of the call is row out.begin + k.
-inline void shiftTaps(const kernels::ResampleTap *taps, const RowBand &out, int srcBegin,
+inline void shiftTaps(const kernels::ResampleTap *taps, const CellRange &out, int srcBegin,
 		      kernels::ResampleTap *shifted)
 {
 	for (int o = out.begin; o < out.end; o++) {
