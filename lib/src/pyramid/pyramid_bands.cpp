@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// Full-width bands: which rows each stage must produce for the bands the classifier
+// reads, their colour conversion and the computed levels' channels there.
+#include "pyramid/pyramid.h"
+#include "pyramid/pyramid_util.h"
+
+#include <algorithm>
+
+namespace calped {
+
+using namespace pyramid_util;
+
+void Pyramid::planRows(const CellRange *levelRows, int width, int height)
+{
+	const int n = scales_.count;
+	for (int i = 0; i < n; i++)
+		rows_[i] = LevelRows();
+	// What the classifier reads, and the raw channel rows the smoothing reaches for;
+	// approximated levels pass their needs on to the computed level they resample.
+	for (int i = 0; i < n; i++) {
+		const PyramidLevel &l = scales_.levels[i];
+		LevelRows &r = rows_[i];
+		const CellRange wanted = levelRows ? levelRows[i].clipped(l.height) : CellRange{ 0, l.height };
+		const CellRange raw = wanted.grown(params_.pyramidSmooth > 0 ? 1 : 0, l.height);
+		r.raw.add(raw);
+		if (!l.computed && !raw.empty()) {
+			// Which source rows the taps read does not depend on their gain.
+			const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
+			if (taps)
+				rows_[l.source].raw.add(sourceRows(taps, raw));
+		}
+	}
+	// The LUV rows each computed level's channels need, with the margin.
+	halfLevel_ = halfLevelOf(params_, scales_);
+	for (int i = 0; i < n; i++) {
+		const PyramidLevel &l = scales_.levels[i];
+		if (!l.computed)
+			continue;
+		LevelRows &r = rows_[i];
+		r.chan = CellRange{ 4 * r.raw.begin - channelMargin_, 4 * r.raw.end + channelMargin_ }
+				 .clipped(4 * l.height);
+		if (r.raw.empty())
+			r.chan = CellRange();
+		r.luv = r.chan;
+	}
+	// Sources, smallest first: octaves below the half-size image are resampled from it
+	// (as the toolbox does), the others from the whole image.
+	fullRows_ = CellRange();
+	for (int i = n - 1; i >= 0; i--) {
+		const PyramidLevel &l = scales_.levels[i];
+		const LevelRows &r = rows_[i];
+		if (!l.computed || r.luv.empty())
+			continue;
+		const int w1 = l.width * 4, h1 = l.height * 4;
+		if (w1 == width && h1 == height) {
+			fullRows_.add(r.luv);
+			continue;
+		}
+		const bool fromHalf = halfLevel_ >= 0 && i > halfLevel_;
+		const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
+		if (!taps)
+			continue; // computeBands() reports it
+		const CellRange src = sourceRows(taps, r.luv);
+		if (fromHalf)
+			rows_[halfLevel_].luv.add(src);
+		else
+			fullRows_.add(src);
+	}
+	// Colour conversion starts on an even row: 4:2:0 strips start on a chroma row.
+	if (!fullRows_.empty())
+		fullRows_.begin &= ~1;
+}
+
+Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
+{
+	const auto t0 = Clock::now();
+	const int width = input.width(), height = input.height();
+	if (!luv_[0].fits(width, height))
+		return Status::error(ErrorCode::ImageTooLarge,
+				     "%dx%d is larger than the pyramid was set up for", width, height);
+	Status st = scalesFor(width, height, scales_);
+	if (!st.ok())
+		return st;
+	width_ = width;
+	height_ = height;
+	planRows(levelRows, width, height);
+	for (int i = 0; i < scales_.count; i++)
+		doneCount_[i] = doneNext_[i] = 0;
+
+	Plane<uint16_t> luv[3];
+	for (int c = 0; c < 3; c++)
+		luv[c] = luv_[c].view(width, height);
+	// Only the rows some level reads.
+	const CellRange luvRows = fullRows_;
+	fullRows_ = CellRange();
+	convertLuvRows(input, luvRows);
+
+	// Computed levels, from the largest: each is resampled from the whole image, or
+	// from the half-size image once that exists (as the toolbox does).
+	Plane<uint16_t> source[3] = { luv[0], luv[1], luv[2] };
+	size_t offset = 0;
+	computedCount = 0;
+	for (int i = 0; i < scales_.count; i++) {
+		const PyramidLevel &l = scales_.levels[i];
+		const LevelRows &r = rows_[i];
+		if (!l.computed)
+			continue;
+		// Every computed level keeps its place in the store, so offsets do not depend
+		// on which rows a frame needs.
+		const size_t need = size_t(kChannelCount) * l.width * l.height;
+		if (offset + need > computedStore_.size())
+			return Status::error(ErrorCode::ImageTooLarge, "channels of level %d do not fit", i);
+		realOffset_[i] = offset;
+		offset += need;
+		if (r.luv.empty())
+			continue;
+		const bool isHalf = i == halfLevel_;
+		const int w1 = l.width * 4, h1 = l.height * 4;
+		Plane<uint16_t> in[3];
+		if (w1 == width && h1 == height) {
+			for (int c = 0; c < 3; c++)
+				in[c] = luv[c];
+		} else {
+			if (!levelLuv_[0].fits(w1, h1) || (isHalf && !halfLuv_[0].fits(w1, h1)))
+				return Status::error(ErrorCode::ImageTooLarge, "level %d does not fit", i);
+			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
+			const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY) : nullptr;
+			if (!yTaps)
+				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+			const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
+			for (int c = 0; c < 3; c++)
+				in[c] = isHalf ? halfLuv_[c].view(w1, h1) : levelLuv_[c].view(w1, h1);
+			resampleRows(source, in, 3, yTapsOf, r.luv, xTaps);
+			if (isHalf)
+				for (int c = 0; c < 3; c++)
+					source[c] = in[c];
+		}
+		if (r.chan.empty())
+			continue;
+		Plane<const uint16_t> band[3];
+		for (int c = 0; c < 3; c++)
+			band[c] = { in[c].row(r.chan.begin), w1, r.chan.size(), in[c].stride };
+		Plane<uint16_t> out[kChannelCount];
+		planesAt(computedStore_.data() + offset - need, l.width, l.height, out);
+		for (int c = 0; c < kChannelCount; c++)
+			out[c].data = out[c].row(r.chan.begin / 4);
+		channels_.compute(band, w1, r.chan.size(), out);
+		computedCount++;
+	}
+	msChannels = msSince(t0);
+	msApprox = 0;
+	msSmooth = 0;
+	return Status::success();
+}
+
+void Pyramid::convertLuvRows(FrameInput &input, CellRange rows)
+{
+	rows = rows.clipped(height_);
+	if (rows.empty() || fullRows_.contains(rows))
+		return;
+	Plane<uint16_t> luv[3];
+	for (int c = 0; c < 3; c++)
+		luv[c] = luv_[c].view(width_, height_);
+	// The rows above and below those converted, a strip of RGB rows at a time (the
+	// whole band at once when the frame is RGB8 already); strips start on even rows
+	// (4:2:0 chroma).
+	const CellRange parts[2] = { fullRows_.empty() ? rows : CellRange{ rows.begin, fullRows_.begin },
+				   fullRows_.empty() ? CellRange() : CellRange{ fullRows_.end, rows.end } };
+	const int strip = input.stripRows();
+	for (const CellRange &part : parts) {
+		if (part.empty())
+			continue;
+		for (int y0 = part.begin & ~1; y0 < part.end; y0 += strip) {
+			const int n = std::min(strip, part.end - y0);
+			ptrdiff_t stride;
+			const uint8_t *rgb = input.rows(y0, n, stride);
+			k_->rgbToLuv(luvTables_, rgb, stride, width_, n, luv[0].row(y0), luv[1].row(y0),
+				     luv[2].row(y0), luv[0].stride);
+		}
+	}
+	fullRows_.add(rows);
+}
+
+} // namespace calped
