@@ -49,10 +49,14 @@ std::string markdownReport(const std::string &pagePath, const std::vector<RunRes
 	if (!c.overlays.empty()) {
 		char score[64];
 		std::snprintf(score, sizeof(score), "%g", c.overlayScore);
+		// Listed, not shown: they are large and not kept in the repository, so a page
+		// committed with them would link images that a checkout does not have.
 		md += "### Sample frames\n\nGround truth in blue, detections scoring at least " +
-		      std::string(score) + " in green.\n\n";
+		      std::string(score) +
+		      " in green. The run writes them beside this page (not in the repository: "
+		      "about 750 KB each):\n\n";
 		for (const std::string &p : c.overlays)
-			md += "![" + baseName(p) + "](" + relativeTo(pagePath, p) + ")\n";
+			md += "- `" + relativeTo(pagePath, p) + "`\n";
 		md += "\n";
 	}
 	return md;
