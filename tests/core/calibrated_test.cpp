@@ -57,6 +57,29 @@ CameraModel groundCamera(double height, double downDeg)
 
 } // namespace
 
+TEST(CalibratedDetector, ACameraThatSeesNoGroundIsRefused)
+{
+	// Looking up at the sky (the principal row far below the image): no window anywhere
+	// holds a standing person, which is a wrong calibration, not an empty scene.
+	Eigen::Matrix3d K;
+	K << 800, 0, 320, 0, 800, 900, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	DetectorConfig cfg;
+	cfg.maxWidth = 640;
+	cfg.maxHeight = 480;
+	cfg.camera = &camera;
+	std::unique_ptr<Detector> det;
+	const Status st = Detector::create(test::randomModel(1), cfg, det);
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("see the ground"), std::string::npos) << st.message();
+	// The same camera in the generic method only reports world coordinates: allowed.
+	cfg.method = DetectionMethod::Generic;
+	EXPECT_TRUE(Detector::create(test::randomModel(1), cfg, det).ok());
+}
+
 TEST(CalibratedDetector, RejectsMissingCameraAndOtherFrameSizes)
 {
 	DetectorConfig cfg;

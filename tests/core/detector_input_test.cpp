@@ -250,6 +250,20 @@ TEST(DetectorInput, BadConfigurations)
 	EXPECT_EQ(Detector::create(broken, DetectorConfig(), det).code(), ErrorCode::ModelInvalid);
 }
 
+TEST(DetectorInput, FramesBeyondTheResamplerAreRefusedAtCreate)
+{
+	// So large that a pyramid level would have to be resampled more than 10x smaller in
+	// one step: create() says so, rather than detect() failing on every frame.
+	DetectorConfig cfg;
+	cfg.maxWidth = 4000;
+	cfg.maxHeight = 4000;
+	std::unique_ptr<Detector> det;
+	const Status st = Detector::create(test::randomModel(3), cfg, det);
+	EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+	EXPECT_NE(std::string(st.message()).find("resampler"), std::string::npos) << st.message();
+	EXPECT_EQ(det, nullptr);
+}
+
 TEST(DetectorInput, CandidateOverflowIsCounted)
 {
 	DetectorConfig cfg;

@@ -81,7 +81,11 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		planeStride_ = rowStride_ * (maxLevelH_ + 2 * padH_);
 		levelBuf_.assign(size_t(kChannelCount) * planeStride_, 0);
 		rowTmp_.assign(size_t(std::max(luvW, luvH)) * 2 + 64, 0);
-		buildTapCache(); // without it (a ratio beyond the resampler) compute() reports that
+		if (!buildTapCache())
+			return Status::error(ErrorCode::InvalidArgument,
+					     "%dx%d frames need a pyramid level resampled more than 10x "
+					     "smaller in one step, beyond the resampler",
+					     maxWidth, maxHeight);
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory,
 				     "pyramid buffers for %dx%d frames do not fit in memory",

@@ -36,6 +36,16 @@ Status CalibratedSearch::init(const CameraModel &camera, const ModelParams &para
 	if (!st.ok())
 		return st;
 	levels_ = scales.count;
+	size_t plausible = 0;
+	for (int i = 0; i < levels_; i++)
+		plausible += plan_.windowCount(i);
+	// A camera that sees no ground, or no person of those heights anywhere in the frame,
+	// would run without a single window: a wrong calibration, not a quiet scene.
+	if (plausible == 0)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "the calibration leaves no window where a person %g-%g m tall could "
+				     "stand in %dx%d frames (does the camera see the ground?)",
+				     settings.minPersonHeight, settings.maxPersonHeight, frameW, frameH);
 	bandCount_ = 0;
 	for (int i = 0; i < levels_; i++) {
 		levelNeeded_[i] = plan_.levelNeeded(i);
