@@ -80,6 +80,13 @@ fi
 resolve() { # REV -> full commit hash; an unknown revision is a usage error
 	git rev-parse --verify --quiet "$1^{commit}" || usage_error "unknown revision '$1'"
 }
+describe() { # commit -> short hash and the start of its subject
+	local subject
+	subject=$(git log -1 --format=%s "$1")
+	((${#subject} <= 60)) || subject="${subject:0:57}..."
+	echo "$(git rev-parse --short "$1") \"$subject\""
+}
+
 # (usage_error exits only the command substitution; pass its status on)
 base=$(resolve "$base_rev") || exit 2
 new=$(resolve "$new_rev") || exit 2
@@ -123,10 +130,10 @@ build_revision() {
 	local dir=build-compare/$commit
 	local src=$dir/src build=$dir/build model=$dir/AcfInriaDetector.cpm
 	if [[ -f $dir/done && -x $build/tools/eval/calped-eval && -f $model && ! $mat -nt $model ]]; then
-		echo "$me: reusing $dir ($(git log -1 --format='%h %s' "$commit" | cut -c1-70))"
+		echo "$me: reusing the build of $(describe "$commit") in $dir"
 		return
 	fi
-	echo "$me: building $(git log -1 --format='%h %s' "$commit" | cut -c1-70) in $dir"
+	echo "$me: building $(describe "$commit") in $dir (log: $dir/ninja.log)"
 	rm -f "$dir/done"
 	# A checkout left by an interrupted run is replaced: its files are older than the build's.
 	if [[ -e $src ]]; then
@@ -141,7 +148,10 @@ build_revision() {
 		tail -n 30 "$dir/meson.log" >&2
 		false
 	}
-	ninja -C "$build" -j "$ninja_jobs" "${targets[@]}"
+	ninja -C "$build" -j "$ninja_jobs" "${targets[@]}" >"$dir/ninja.log" 2>&1 || {
+		grep -v '^\[[0-9]*/[0-9]*\]' "$dir/ninja.log" | tail -n 40 >&2
+		false
+	}
 	"$build/tools/convert/calped-convert" "$mat" "$model.tmp" >/dev/null
 	mv "$model.tmp" "$model"
 	git worktree remove --force "$src"
@@ -262,12 +272,12 @@ compare() {
 	local line name method resize at levels same=0 differing=()
 	local table=$out/table.md
 	{
-		echo "Detections of $(git log -1 --format='%h (%s)' "$base" | cut -c1-80) (base)"
-		echo "and $(git log -1 --format='%h (%s)' "$new" | cut -c1-80) (new),"
-		echo "PETS 2009 S2L1 frames 1-${frames:-795}; base with the $(<"$out/base.cli") flags," \
-			"new with the $(<"$out/new.cli") flags;" \
-			"models $(cmp -s "build-compare/$base/AcfInriaDetector.cpm" \
-				"build-compare/$new/AcfInriaDetector.cpm" && echo identical || echo DIFFERENT)."
+		echo "PETS 2009 S2L1 frames 1-${frames:-795}, calped-eval's detection CSVs of"
+		echo
+		echo "- base $(describe "$base") ($(<"$out/base.cli") pyramid flags)"
+		echo "- new  $(describe "$new") ($(<"$out/new.cli") pyramid flags)"
+		echo "- models converted by each: $(cmp -s "build-compare/$base/AcfInriaDetector.cpm" \
+			"build-compare/$new/AcfInriaDetector.cpm" && echo identical || echo DIFFERENT)"
 		echo
 		echo "| configuration | base detections | new detections | identical | base s | new s |"
 		echo "|---|---:|---:|---|---:|---:|"
