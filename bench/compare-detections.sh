@@ -121,6 +121,8 @@ remove_trees() {
 	git worktree prune
 }
 trap remove_trees EXIT
+# An interrupted build must not leave its checkout registered: exit, so the EXIT trap runs.
+trap 'echo "$me: interrupted" >&2; exit 130' INT TERM HUP
 
 # Builds commit $1 in build-compare/<commit>/build, converts the model with that commit's own
 # calped-convert (so a changed blob format is compared as its users would get it), and
