@@ -10,8 +10,9 @@
 #     --jobs J     calped-eval runs at a time (default 1); builds use CALPED_JOBS (default 2)
 # Prints a table and writes it to out/compare/table.md; each run's CSVs, JSON and log are
 # kept in out/compare/{base,new}/. Exit status: 0 all identical, 1 some configuration
-# differs, 2 usage error, 3 a build or run failed, 130 interrupted. Without ../shared (CALPED_SHARED_DIR) there
-# is no ground truth or calibration: it says so and exits 0 without comparing.
+# differs, 2 usage error, 3 a build or run failed, 130 interrupted. Without ../shared
+# (CALPED_SHARED_DIR) there is no ground truth or calibration: it says so and exits 0
+# without comparing.
 # A revision is built once: build-compare/<commit>/ keeps its build and converted model, and
 # later runs at the same commit reuse them (docs/benchmarks.md).
 set -Eeuo pipefail
