@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Calibrated mode: the thesis's scale selection (3.1) on a synthetic camera, the window
-// plan's world-height test, and calibrated against generic detection on PETS.
+// The calibrated method: refused set-ups, the static gate, placed levels and rectangles,
+// low cameras, and calibrated against generic detection on PETS.
 #include <gtest/gtest.h>
 
 #include <algorithm>

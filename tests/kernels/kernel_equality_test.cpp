@@ -2,8 +2,14 @@
 // Every optimised kernel against the scalar reference: random inputs, odd widths and
 // heights, strides wider than rows and unaligned starts (base pointers one element past an
 // aligned address, for inputs and outputs); outputs must be bit-identical.
+// The colour conversion and the magnitude normalisation have no portable optimised
+// version (the "opt" table holds their references), so on a build or CPU without SIMD
+// kernels nothing would be compared: every table's, the reference's included, is also
+// checked against the toolbox's formula worked out here in double precision.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -36,6 +42,110 @@ std::vector<const KernelTable *> tablesUnderTest()
 	const int n = availableKernelTables(all, 8);
 	return std::vector<const KernelTable *>(all + 1, all + n);
 }
+
+// Every table, the reference first.
+std::vector<const KernelTable *> allTables()
+{
+	const KernelTable *all[8];
+	const int n = availableKernelTables(all, 8);
+	return std::vector<const KernelTable *>(all, all + n);
+}
+
+// ---- the toolbox's formulas, in double precision ---------------------------------------
+// From docs/channels.md and the toolbox's constants (rgbConvertMex's matrix, u'n, v'n),
+// written independently of lib/kernels/tables.cpp: a wrong table entry or constant, or a
+// kernel that reads them wrongly, shows up here on every build.
+
+// The toolbox's rcpps on the Intel CPU of the reference (docs/channels.md): v's mantissa in
+// [1, 2) cut to its top 11 fraction bits, 1 / x taken at the middle of that cell and
+// rounded to nearest with 12 fraction bits (of its own mantissa, in (1, 2]).
+double rcppsIntel(double v)
+{
+	const int e = std::ilogb(v);                  // v = mant * 2^e, mant in [1, 2)
+	const double mant = std::scalbn(v, -e);
+	const double cell = std::floor((mant - 1) * 2048);
+	const double mid = 1 + (cell + 0.5) / 2048;
+	const double inv2 = 2 / mid;                  // in (1, 2]: 1 / mid = inv2 / 2
+	return std::scalbn(std::nearbyint(inv2 * 4096) / 4096, -e - 1);
+}
+
+// CIE lightness over 270 of a luminance y in [0, 1], as the toolbox tabulates it.
+double lightnessOver270(double y)
+{
+	const double y0 = std::pow(6.0 / 29.0, 3.0);
+	return (y > y0 ? 116 * std::cbrt(y) - 16 : y * std::pow(29.0 / 3.0, 3.0)) / 270;
+}
+
+// rgbConvert(I, 'luv') of one 8-bit pixel in Q16 (value * 2^16, not rounded): the sRGB ->
+// XYZ matrix of the toolbox's rgbConvertMex; L from its 1025-entry table indexed by
+// floor(y * 1024), held in Q16 (rounded, kernels.h); u = L (52 x / d - 13 u'n) + 88/270
+// and v = L (117 y / d - 13 v'n) + 134/270 with d = x + 15 y + 3 z and 1 / d by rcpps.
+// `nudge` moves y * 1024 and d by a relative 1e-6 before they are cut (the kernel's Q28
+// sums differ from exact ones by less): a pixel whose table index or reciprocal cell
+// lies that close to an edge may take either side.
+struct Luv {
+	double l, u, v;
+};
+Luv luvFormula(const uint8_t *rgb, int nudge)
+{
+	const double r = rgb[0] / 255.0, g = rgb[1] / 255.0, b = rgb[2] / 255.0;
+	const double x = 0.430574 * r + 0.341550 * g + 0.178325 * b;
+	const double y = 0.222015 * r + 0.706655 * g + 0.071330 * b;
+	const double z = 0.020183 * r + 0.129553 * g + 0.939180 * b;
+	const double k = 1 + nudge * 1e-6;
+	const double index = std::min(std::floor(y * 1024 * k), 1024.0);
+	const double l = std::nearbyint(lightnessOver270(index / 1024) * 65536) / 65536;
+	const double d = x + 15 * y + 3 * z;
+	const double rd = d > 0 ? rcppsIntel(d * k) : 0;
+	const double u = l * (52 * x * rd - 13 * 0.197833) + 88.0 / 270;
+	const double v = l * (117 * y * rd - 13 * 0.468331) + 134.0 / 270;
+	return { l * 65536, u * 65536, v * 65536 };
+}
+
+double saturate16(double q) { return std::min(std::max(q, 0.0), 65535.0); }
+
+// A kernel's L, U and V of one pixel against luvFormula: L exactly, U and V within
+// kLuvTolerance. The bound, in Q16 units: the x/d and y/d ratios are rounded to Q20, then
+// multiplied by 52 or 117 and by L <= 0.371 (V: 117 * 0.371 * 2^-21 * 2^16 = 1.4); the
+// Q28 matrix entries are rounded (3 * 0.5 * 255 * 2^-28 in x, y, z: 0.3 in V); 13 u'n and
+// 13 v'n are Q20 (0.01); the offset and the result are rounded (0.5 each): 2.7 in all.
+// The largest seen: 2.0-2.3 (V of RGB 231,235,233 is 2.04 off).
+constexpr double kLuvTolerance = 3;
+::testing::AssertionResult luvMatchesFormula(const uint8_t *rgb, uint16_t l, uint16_t u,
+					     uint16_t v)
+{
+	for (int nudge : { 0, -1, 1 }) {
+		const Luv want = luvFormula(rgb, nudge);
+		if (l == want.l && std::fabs(u - saturate16(want.u)) <= kLuvTolerance &&
+		    std::fabs(v - saturate16(want.v)) <= kLuvTolerance)
+			return ::testing::AssertionSuccess();
+	}
+	const Luv want = luvFormula(rgb, 0);
+	return ::testing::AssertionFailure()
+	       << "RGB " << int(rgb[0]) << "," << int(rgb[1]) << "," << int(rgb[2]) << ": got L "
+	       << l << " U " << u << " V " << v << ", the toolbox's formula gives L " << want.l
+	       << " U " << saturate16(want.u) << " V " << saturate16(want.v) << " (U, V within "
+	       << kLuvTolerance << ")";
+}
+
+// gradMagNorm of one pixel in Q14: M / (S / (r+1)^4 + c) with M the Q16 magnitude and S
+// the triangle filter's sum of Q16 magnitudes (weights summing to (r+1)^4), so that
+// M / (S / (r+1)^4 + c) = M (r+1)^4 / (S + c 2^16 (r+1)^4) =: M (r+1)^4 / D. The divisor D
+// is an integer (the constant rounded to one), divided by rcpps as the toolbox divides
+// (docs/channels.md); D = 0 (no magnitude, c = 0) gives 0. Saturated at 65535.
+double normalizedFormula(uint16_t mag, uint32_t sum, int normRad, double normConst)
+{
+	const double weights = std::pow(normRad + 1.0, 4.0);
+	const double D = double(sum) + std::nearbyint(normConst * 65536 * weights);
+	if (D == 0)
+		return 0;
+	return std::min(65535.0, mag * weights * 16384 * rcppsIntel(D));
+}
+
+// Bound for normalizeMag against the formula, Q14 units: the kernel's reciprocal table
+// holds (r+1)^4 2^16 rcpps(m) rounded to an integer (relative error <= 0.5 / 20736 at
+// r = 5, times at most 65535: 1.6), and the result is rounded (0.5): 2.1.
+constexpr double kNormTolerance = 2.5;
 
 } // namespace
 
@@ -245,7 +355,10 @@ TEST(KernelEquality, RgbToLuv)
 	std::mt19937 rng(6);
 	LuvTables t;
 	buildLuvTables(t);
-	for (const KernelTable *k : tablesUnderTest())
+	// Every table's kernel against the formula; those with a kernel of their own (not the
+	// reference's) also bit for bit against the reference.
+	for (const KernelTable *k : allTables()) {
+		const bool own = k->rgbToLuv != rgbToLuv_ref;
 		for (Size s : kSizes)
 			for (int offset : { 0, 1 }) {
 				const int rgbStride = 3 * s.w + 5, stride = s.w + 3;
@@ -258,31 +371,55 @@ TEST(KernelEquality, RgbToLuv)
 					     a.data() + 2 * plane, stride);
 				k->rgbToLuv(t, rgb.data() + offset, rgbStride, s.w, s.h, b.data(), b.data() + plane,
 					    b.data() + 2 * plane, stride);
-				ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h;
+				if (own) {
+					ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h;
+				}
+				for (int y = 0; y < s.h; y++)
+					for (int x = 0; x < s.w; x++) {
+						const size_t o = size_t(y) * stride + x;
+						ASSERT_TRUE(luvMatchesFormula(&rgb[offset + size_t(y) * rgbStride + 3 * x], b[o],
+									      b[plane + o], b[2 * plane + o]))
+							<< k->name << " " << s.w << "x" << s.h << " pixel " << x << "," << y;
+					}
 			}
-	// Every grey level and every pure colour ramp, where the ratios are extreme.
-	for (const KernelTable *k : tablesUnderTest()) {
-		std::vector<uint8_t> rgb(256 * 4 * 3);
-		for (int i = 0; i < 256; i++)
-			for (int c = 0; c < 3; c++) {
-				rgb[3 * i + c] = uint8_t(i);
-				for (int ramp = 0; ramp < 3; ramp++)
-					rgb[3 * (256 * (ramp + 1) + i) + c] = c == ramp ? uint8_t(i) : 0;
-			}
-		std::vector<uint16_t> a(3 * 1024), b(3 * 1024);
-		rgbToLuv_ref(t, rgb.data(), 0, 1024, 1, a.data(), a.data() + 1024, a.data() + 2048, 1024);
-		k->rgbToLuv(t, rgb.data(), 0, 1024, 1, b.data(), b.data() + 1024, b.data() + 2048, 1024);
-		ASSERT_EQ(a, b) << k->name << " ramps";
+	}
+	// Every grey level and every pure colour ramp, where the ratios are extreme, and a
+	// lattice of the colour cube (every fifth level of each component, ends included).
+	std::vector<uint8_t> rgb(256 * 4 * 3);
+	for (int i = 0; i < 256; i++)
+		for (int c = 0; c < 3; c++) {
+			rgb[3 * i + c] = uint8_t(i);
+			for (int ramp = 0; ramp < 3; ramp++)
+				rgb[3 * (256 * (ramp + 1) + i) + c] = c == ramp ? uint8_t(i) : 0;
+		}
+	for (int r = 0; r <= 255; r += 5)
+		for (int g = 0; g <= 255; g += 5)
+			for (int b = 0; b <= 255; b += 5)
+				rgb.insert(rgb.end(), { uint8_t(r), uint8_t(g), uint8_t(b) });
+	const int n = int(rgb.size() / 3);
+	std::vector<uint16_t> a(3 * size_t(n));
+	rgbToLuv_ref(t, rgb.data(), 0, n, 1, a.data(), a.data() + n, a.data() + 2 * n, n);
+	for (const KernelTable *k : allTables()) {
+		std::vector<uint16_t> b(3 * size_t(n));
+		k->rgbToLuv(t, rgb.data(), 0, n, 1, b.data(), b.data() + n, b.data() + 2 * n, n);
+		if (k->rgbToLuv != rgbToLuv_ref) {
+			ASSERT_EQ(a, b) << k->name << " ramps and lattice";
+		}
+		for (int i = 0; i < n; i++)
+			ASSERT_TRUE(luvMatchesFormula(&rgb[3 * size_t(i)], b[i], b[n + i], b[2 * n + i]))
+				<< k->name << " ramps and lattice, pixel " << i;
 	}
 }
 
 TEST(KernelEquality, NormalizeMagnitude)
 {
 	std::mt19937 rng(7);
+	const int normRad = 5;
 	for (double c : { 0.005, 0.0, 1e-7 }) { // the INRIA constant, and ones that need the scalar path
 		GradientTables t;
-		buildGradientTables(t, 6, 5, c);
-		for (const KernelTable *k : tablesUnderTest())
+		buildGradientTables(t, 6, normRad, c);
+		for (const KernelTable *k : allTables()) {
+			const bool own = k->normalizeMag != normalizeMag_ref;
 			for (Size s : kSizes)
 				for (int offset : { 0, 1 }) {
 					const int stride = s.w + 1;
@@ -290,11 +427,27 @@ TEST(KernelEquality, NormalizeMagnitude)
 					std::vector<uint32_t> sum(size_t(stride) * s.h + offset);
 					for (size_t i = 0; i < sum.size(); i++)
 						sum[i] = rng() % 3 == 0 ? rng() % 4096 : uint32_t(magIn[i]) * (1 + rng() % 1296);
+					if (s.w * s.h > 8)
+						sum[offset] = 0; // no magnitude around: D is the constant alone, or 0
 					auto a = magIn, b = magIn;
 					normalizeMag_ref(t, a.data() + offset, stride, sum.data() + offset, stride, s.w, s.h);
 					k->normalizeMag(t, b.data() + offset, stride, sum.data() + offset, stride, s.w, s.h);
-					ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " c " << c << " offset " << offset;
+					if (own) {
+						ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h << " c " << c << " offset " << offset;
+					}
+					for (int y = 0; y < s.h; y++)
+						for (int x = 0; x < s.w; x++) {
+							const size_t i = offset + size_t(y) * stride + x;
+							const double want = normalizedFormula(magIn[i], sum[i], normRad, c);
+							ASSERT_LE(std::fabs(b[i] - want), kNormTolerance)
+								<< k->name << " c " << c << ": M " << magIn[i] << ", S " << sum[i]
+								<< " gave " << b[i] << ", the toolbox's formula " << want;
+						}
+					// Outside the rectangle nothing changed.
+					for (int y = 0; y < s.h; y++)
+						ASSERT_EQ(b[offset + size_t(y) * stride + s.w], magIn[offset + size_t(y) * stride + s.w]);
 				}
+		}
 	}
 }
 
