@@ -94,7 +94,7 @@ Status FileSource::readFrame(int &width, int &height)
 				return Status::error(ErrorCode::IoError, "%s has no video frames",
 						     options_.path.c_str());
 		} else if (nextFile_ < files_.size()) {
-			return decodeImageInto(files_[nextFile_++], pixels_.data(), pixels_.size(), width,
+			return decodeImageInto(decoder_, files_[nextFile_++], pixels_.data(), pixels_.size(), width,
 					       height);
 		}
 		if (!options_.loop)

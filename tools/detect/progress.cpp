@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numeric>
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 RunStats::RunStats(long totalFrames)
 	: total_(totalFrames), start_(Clock::now()), lastProgress_(start_)
@@ -57,8 +57,12 @@ double RunStats::wallSeconds() const
 void RunStats::printProgress() const
 {
 	double wall = wallSeconds();
-	std::fprintf(stderr, "calped-detect: %ld/%ld frames, detector %.1f ms/frame (mean), %.1f frames/s overall\n",
-		     frames(), total_, meanMs(), wall > 0 ? frames() / wall : 0.0);
+	// A video's length is not known up front: then only the frames so far.
+	char total[32] = "";
+	if (total_ > 0)
+		std::snprintf(total, sizeof(total), "/%ld", total_);
+	std::fprintf(stderr, "calped-detect: %ld%s frames, detector %.1f ms/frame (mean), %.1f frames/s overall\n",
+		     frames(), total, meanMs(), wall > 0 ? frames() / wall : 0.0);
 }
 
 void RunStats::printSummary() const
@@ -72,4 +76,4 @@ void RunStats::printSummary() const
 		     n ? static_cast<double>(detections_) / n : 0.0, medianMs(), meanMs(), wallSeconds());
 }
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

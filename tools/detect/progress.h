@@ -6,12 +6,12 @@
 #include <cstdint>
 #include <vector>
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 class RunStats
 {
 public:
-	explicit RunStats(long totalFrames);
+	explicit RunStats(long totalFrames); // <= 0: unknown (videos)
 
 	// Records one frame: the detector's own time (FrameStats::msTotal) and its detections.
 	void addFrame(double detectorMs, int detections);
@@ -37,4 +37,4 @@ private:
 	Clock::time_point lastProgress_;
 };
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

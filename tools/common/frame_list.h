@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 // True for the extensions a folder is scanned for (case-insensitive).
 bool hasImageExtension(const std::string &path);
@@ -16,4 +16,4 @@ bool hasImageExtension(const std::string &path);
 bool listFrames(const std::vector<std::string> &inputs, std::vector<std::string> &frames,
 		std::string &error);
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

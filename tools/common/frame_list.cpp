@@ -8,7 +8,7 @@
 
 namespace fs = std::filesystem;
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 bool hasImageExtension(const std::string &path)
 {
@@ -76,4 +76,4 @@ bool listFrames(const std::vector<std::string> &inputs, std::vector<std::string>
 	return true;
 }
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

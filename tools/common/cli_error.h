@@ -7,7 +7,7 @@
 #include <new>
 #include <string>
 
-namespace calped {
+namespace calped::apps {
 
 constexpr int kExitRuntime = 1;
 constexpr int kExitUsage = 2;
@@ -37,4 +37,4 @@ int runGuarded(const char *program, Body body)
 	}
 }
 
-} // namespace calped
+} // namespace calped::apps

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// What every program does with its command line before its own work: parse it by its
+// option table, answer -h/--help and --version, and turn a usage error into one line on
+// standard error and exit status kExitUsage.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "args.h"
+
+namespace calped::apps {
+
+struct ProgramInfo {
+	const char *name;     // "calped-detect": error prefix and --version
+	const char *synopsis; // help text before the options ("usage: ...\n\n...\n")
+	const char *epilogue; // help text after the options (may be "")
+};
+
+// -1: go on with `out`; otherwise the exit status to return at once (0 after --help or
+// --version, kExitUsage after a usage error, which is printed).
+int parseCommandLine(const ProgramInfo &program, const std::vector<OptionSpec> &table,
+		     bool allowPositional, int argc, const char *const *argv, ParsedArgs &out);
+
+// "calped-detect 0.1.0"
+std::string versionLine(const char *program);
+
+// Prints the whole --help text to standard output.
+void printHelp(const ProgramInfo &program, const std::vector<OptionSpec> &table);
+
+// A usage error found after parsing: "PROGRAM: message" on stderr, returns kExitUsage.
+int usageError(const ProgramInfo &program, const std::string &message);
+
+} // namespace calped::apps
