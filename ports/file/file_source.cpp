@@ -28,7 +28,7 @@ Status FileSource::open(const FileSourceOptions &options, std::unique_ptr<FileSo
 	} else {
 		st = listImageFiles(options.path, src->files_);
 		if (st.ok())
-			st = probeImageFiles(src->files_, src->maxWidth_, src->maxHeight_);
+			st = probeImageFiles(src->decoder_, src->files_, src->maxWidth_, src->maxHeight_);
 		src->name_ = "file:" + options.path + " (" + std::to_string(src->files_.size()) +
 			     (src->files_.size() == 1 ? " image)" : " images)");
 	}

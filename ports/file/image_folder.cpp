@@ -48,10 +48,10 @@ Status listImageFiles(const std::string &path, std::vector<std::string> &files)
 	return Status::success();
 }
 
-Status probeImageFiles(const std::vector<std::string> &files, int &maxWidth, int &maxHeight)
+Status probeImageFiles(ImageDecoder &decoder, const std::vector<std::string> &files,
+		       int &maxWidth, int &maxHeight)
 {
 	maxWidth = maxHeight = 0;
-	ImageDecoder decoder;
 	std::string error;
 	for (const std::string &file : files) {
 		int w = 0, h = 0;

@@ -4,9 +4,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <memory>
-#include <system_error>
+#include <sys/stat.h>
 
 #include "stb_guard.h"
 
@@ -93,8 +92,9 @@ bool readFileBytes(const std::string &path, std::vector<uint8_t> &out, std::stri
 		   const std::string &what)
 {
 	out.clear();
-	std::error_code ec;
-	if (std::filesystem::is_directory(path, ec)) {
+	// stat(), not std::filesystem: a path object would allocate on every frame.
+	struct stat st;
+	if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
 		error = "cannot read " + what + path + ": is a directory";
 		return false;
 	}

@@ -56,6 +56,39 @@ TEST(EvalOptions, UsageErrors)
 		<< error;
 }
 
+TEST(EvalOptions, DetectorFlagsAndTheirDefaults)
+{
+	EvalOptions o;
+	std::string error;
+	ASSERT_TRUE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--calib=c.xml" }, o, error)) << error;
+	EXPECT_EQ(o.calib, "c.xml");
+	EXPECT_EQ(o.detector.calibPath, "c.xml");
+	EXPECT_EQ(o.detector.resizeAt, apps::ResizeAt::Default);
+	EXPECT_EQ(o.detector.levels, apps::Levels::Default);
+	ASSERT_TRUE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--resize-at", "frame",
+			    "--levels=toolbox", "--resizes", "0.5,2" },
+			  o, error))
+		<< error;
+	EXPECT_EQ(o.detector.resizeAt, apps::ResizeAt::Frame);
+	EXPECT_EQ(o.detector.levels, apps::Levels::Toolbox);
+	// The pyramid only upscales; placed levels need the frame at its own size.
+	EXPECT_FALSE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--resize-at", "pyramid",
+			     "--resizes", "0.5" },
+			   o, error));
+	EXPECT_NE(error.find("--resize-at pyramid"), std::string::npos) << error;
+	EXPECT_FALSE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--resize-at", "frame",
+			     "--levels", "placed", "--resizes", "2" },
+			   o, error));
+	EXPECT_NE(error.find("--levels placed"), std::string::npos) << error;
+	// The removed flags are unknown options, named as written.
+	for (const char *gone : { "--resize-in-pyramid", "--calibrated-pyramid", "--bogus" }) {
+		EXPECT_FALSE(parse({ "--frames", "f", "--gt", "g", "--model", "m", gone }, o, error));
+		EXPECT_EQ(error, "unknown option '" + std::string(gone) + "' (try --help)");
+	}
+	ASSERT_TRUE(parse({ "--version" }, o, error)) << error;
+	EXPECT_TRUE(o.version);
+}
+
 TEST(Methods, RegistryKnowsBothModes)
 {
 	ASSERT_NE(findMethod("generic"), nullptr);
