@@ -60,7 +60,7 @@ const apps::ProgramInfo kProgram = {
 
 int main(int argc, char **argv)
 {
-	std::vector<apps::OptionSpec> table = {
+	const std::vector<apps::OptionSpec> own = {
 		{ "frames", "DIR", "the PNG frames, in name order" },
 		{ "first", "F", "start at the F-th frame (1-based, default 1)" },
 		{ "count", "N", "frames to time (default 50)" },
@@ -68,18 +68,19 @@ int main(int argc, char **argv)
 		{ "format", "NAME", "convert the frames to this camera pixel format first (NV12, YUYV,\n"
 				    "BayerRGGB8, ...; default RGB8), so the input conversion is timed" },
 	};
-	const std::vector<apps::OptionSpec> detectorFlags = apps::detectorOptionTable(apps::DetectorFlags::All);
-	table.insert(table.end(), detectorFlags.begin(), detectorFlags.end());
+	apps::DetectorOptions options;
 	apps::ParsedArgs args;
-	const int rc = apps::parseCommandLine(kProgram, table, false, argc, argv, args);
+	const int rc = apps::parseCommandLine(
+		kProgram, apps::joinOptions(own, apps::detectorOptionTable(apps::DetectorFlags::All)), false,
+		argc, argv, args, [&](const apps::ParsedOption &o, std::string &e) {
+			return apps::takeDetectorOption(o, options, e);
+		});
 	if (rc >= 0)
 		return rc;
-	apps::DetectorOptions options;
 	std::string framesDir, formatName = "RGB8", error;
 	long first = 1, count = 50, repeat = 1; // first: 1-based, in name order
 	for (const apps::ParsedOption &o : args.options) {
-		if (apps::takeDetectorOption(o, options, error)) {
-		} else if (o.name == "frames") {
+		if (o.name == "frames") {
 			framesDir = o.value;
 		} else if (o.name == "format") {
 			formatName = o.value;

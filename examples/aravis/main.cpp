@@ -50,7 +50,7 @@ private:
 
 int run(int argc, char **argv)
 {
-	std::vector<apps::OptionSpec> table = {
+	const std::vector<apps::OptionSpec> own = {
 		{ "camera", "ID", "Aravis device id or IP address (default: the first camera)" },
 		{ "pixel-format", "F", "GenICam PixelFormat: Mono8, RGB8, BGR8, YUV422_YUYV_Packed,\n"
 				       "BayerRG8, ... (default: the camera's)" },
@@ -67,21 +67,14 @@ int run(int argc, char **argv)
 		{ "lost-after", "MS", "no frame for MS: check the camera answers (default 2000)" },
 		{ "reconnect", nullptr, "reopen the camera after a loss instead of exiting" },
 	};
-	const std::vector<apps::OptionSpec> common = live::liveOptionTable();
-	table.insert(table.end(), common.begin(), common.end());
+	live::LiveOptions options;
 	apps::ParsedArgs args;
-	const int rc = apps::parseCommandLine(kProgram, table, false, argc, argv, args);
+	const int rc = live::parseLiveCommandLine(kProgram, own, argc, argv, options, args);
 	if (rc >= 0)
 		return rc;
-	live::LiveOptions options;
 	ports::AravisOptions cam;
 	std::string error;
 	for (const apps::ParsedOption &o : args.options) {
-		if (live::takeLiveOption(o, options, error)) {
-			if (!error.empty())
-				return apps::usageError(kProgram, error);
-			continue;
-		}
 		const std::string &n = o.name;
 		struct Count {
 			const char *name;
@@ -111,18 +104,17 @@ int run(int argc, char **argv)
 			// a number, parsed above
 		} else if (n == "camera") {
 			cam.camera = o.value;
-		}
-		else if (n == "pixel-format")
+		} else if (n == "pixel-format") {
 			cam.pixelFormat = o.value;
-		else if (n == "packet-socket")
+		} else if (n == "packet-socket") {
 			cam.packetSocket = true;
-		else if (n == "no-packet-resend")
+		} else if (n == "no-packet-resend") {
 			cam.packetResend = false;
-		else if (n == "reconnect")
+		} else if (n == "reconnect") {
 			cam.reconnect = true;
-		else if (n == "fps")
+		} else if (n == "fps") {
 			apps::numberIn(o, 0, true, 10000, cam.frameRate, error);
-
+		}
 		if (!error.empty())
 			return apps::usageError(kProgram, error);
 	}

@@ -6,19 +6,17 @@ namespace live {
 
 std::vector<apps::OptionSpec> liveOptionTable()
 {
-	std::vector<apps::OptionSpec> t = { { nullptr, nullptr, "detector and output options:" } };
-	const std::vector<apps::OptionSpec> detector = apps::detectorOptionTable(apps::DetectorFlags::All);
-	t.insert(t.end(), detector.begin(), detector.end());
-	const std::vector<apps::OptionSpec> own = {
+	const std::vector<apps::OptionSpec> t = apps::joinOptions(
+		{ { nullptr, nullptr, "detector and output options:" } },
+		apps::detectorOptionTable(apps::DetectorFlags::All));
+	return apps::joinOptions(t, {
 		{ "overlay", "DIR", "save DIR/NNNNNN.png (frame id) with the detections drawn" },
 		{ "overlay-every", "K", "overlay every K-th processed frame (default 1)" },
 		{ "frames", "N", "stop after N processed frames, exit status 0" },
 		{ "timeout", "MS", "wait per frame before counting a timeout (default 2000)" },
 		{ "stats-every", "S", "seconds between stats lines on stderr (default 5)" },
 		{ "quiet", nullptr, "no stats lines" },
-	};
-	t.insert(t.end(), own.begin(), own.end());
-	return t;
+	});
 }
 
 bool takeLiveOption(const apps::ParsedOption &o, LiveOptions &out, std::string &error)
@@ -46,6 +44,15 @@ bool takeLiveOption(const apps::ParsedOption &o, LiveOptions &out, std::string &
 bool checkLiveOptions(LiveOptions &options, std::string &error)
 {
 	return apps::checkDetectorOptions(options.detector, true, apps::DetectorFlags::All, error);
+}
+
+int parseLiveCommandLine(const apps::ProgramInfo &program, const std::vector<apps::OptionSpec> &own,
+			 int argc, const char *const *argv, LiveOptions &options, apps::ParsedArgs &rest)
+{
+	return apps::parseCommandLine(program, apps::joinOptions(own, liveOptionTable()), false, argc,
+				      argv, rest, [&](const apps::ParsedOption &o, std::string &error) {
+					      return takeLiveOption(o, options, error);
+				      });
 }
 
 const char *liveEpilogue()

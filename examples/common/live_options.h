@@ -9,6 +9,7 @@
 
 #include "args.h"
 #include "detector_options.h"
+#include "program.h"
 
 namespace calped {
 namespace live {
@@ -32,6 +33,12 @@ bool takeLiveOption(const apps::ParsedOption &option, LiveOptions &out, std::str
 
 // Cross-option checks after every option was parsed (e.g. --model given).
 bool checkLiveOptions(LiveOptions &options, std::string &error);
+
+// The example's command line: its own options (`own`, first in --help) and the common
+// ones, which fill `options`; the example's own are left in `rest.options`. -1 to go on,
+// else the exit status (apps::parseCommandLine).
+int parseLiveCommandLine(const apps::ProgramInfo &program, const std::vector<apps::OptionSpec> &own,
+			 int argc, const char *const *argv, LiveOptions &options, apps::ParsedArgs &rest);
 
 // The end of --help: output and exit status.
 const char *liveEpilogue();

@@ -28,29 +28,25 @@ const apps::ProgramInfo kProgram = {
 
 int run(int argc, char **argv)
 {
-	std::vector<apps::OptionSpec> table = {
+	const std::vector<apps::OptionSpec> own = {
 		{ "input", "PATH", "image file, image folder or video file" },
 		{ "fps", "F", "pace frames at F per second (default: as fast as processed)" },
 		{ "loop", nullptr, "start again after the last frame (stop with --frames or SIGINT)" },
 	};
-	const std::vector<apps::OptionSpec> common = live::liveOptionTable();
-	table.insert(table.end(), common.begin(), common.end());
+	live::LiveOptions options;
 	apps::ParsedArgs args;
-	const int rc = apps::parseCommandLine(kProgram, table, false, argc, argv, args);
+	const int rc = live::parseLiveCommandLine(kProgram, own, argc, argv, options, args);
 	if (rc >= 0)
 		return rc;
-	live::LiveOptions options;
 	ports::FileSourceOptions source;
 	std::string error;
 	for (const apps::ParsedOption &o : args.options) {
-		if (!live::takeLiveOption(o, options, error)) {
-			if (o.name == "input")
-				apps::nonEmpty(o, "a file or folder name", source.path, error);
-			else if (o.name == "fps")
-				apps::numberIn(o, 0, true, 1000, source.fps, error);
-			else if (o.name == "loop")
-				source.loop = true;
-		}
+		if (o.name == "input")
+			apps::nonEmpty(o, "a file or folder name", source.path, error);
+		else if (o.name == "fps")
+			apps::numberIn(o, 0, true, 1000, source.fps, error);
+		else if (o.name == "loop")
+			source.loop = true;
 		if (!error.empty())
 			return apps::usageError(kProgram, error);
 	}

@@ -54,24 +54,9 @@ bool parseFormat(const std::string &text, std::optional<calped::PixelFormat> &ou
 	return false;
 }
 
-// "WxH" with 1 <= W, H <= 16384.
-bool parseSize(const std::string &text, int &width, int &height)
-{
-	const size_t x = text.find('x');
-	long w = 0, h = 0;
-	if (x == std::string::npos || !calped::apps::parseWhole(text.substr(0, x), w) ||
-	    !calped::apps::parseWhole(text.substr(x + 1), h))
-		return false;
-	if (w < 1 || h < 1 || w > 16384 || h > 16384)
-		return false;
-	width = static_cast<int>(w);
-	height = static_cast<int>(h);
-	return true;
-}
-
 int run(int argc, char **argv)
 {
-	std::vector<apps::OptionSpec> table = {
+	const std::vector<apps::OptionSpec> own = {
 		{ "camera", "ID|INDEX", "camera id as `cam --list` prints it, or its index there\n"
 					"(default: the first camera)" },
 		{ "format", "F", "nv12, yuv420, yuyv, rgb888 (B,G,R bytes) or bgr888 (R,G,B\n"
@@ -83,21 +68,14 @@ int run(int argc, char **argv)
 		{ "lost-after", "MS", "no complete frame for MS: camera lost, exit 1\n"
 				      "(default 10000; 0: wait forever)" },
 	};
-	const std::vector<apps::OptionSpec> common = live::liveOptionTable();
-	table.insert(table.end(), common.begin(), common.end());
+	live::LiveOptions options;
 	apps::ParsedArgs args;
-	const int rc = apps::parseCommandLine(kProgram, table, false, argc, argv, args);
+	const int rc = live::parseLiveCommandLine(kProgram, own, argc, argv, options, args);
 	if (rc >= 0)
 		return rc;
-	live::LiveOptions options;
 	ports::LibcameraOptions camera;
 	std::string error;
 	for (const apps::ParsedOption &o : args.options) {
-		if (live::takeLiveOption(o, options, error)) {
-			if (!error.empty())
-				return apps::usageError(kProgram, error);
-			continue;
-		}
 		long n = 0;
 		if (o.name == "camera") {
 			camera.camera = o.value;
@@ -105,7 +83,7 @@ int run(int argc, char **argv)
 			if (!parseFormat(o.value, camera.format))
 				error = apps::badValue(o, "nv12, yuv420, yuyv, rgb888 or bgr888");
 		} else if (o.name == "size") {
-			if (!parseSize(o.value, camera.width, camera.height))
+			if (!apps::parseFrameSize(o.value, camera.width, camera.height))
 				error = apps::badValue(o, "WxH with W and H from 1 to 16384");
 		} else if (o.name == "fps") {
 			apps::numberIn(o, 0, true, 1000, camera.fps, error);

@@ -54,6 +54,17 @@ protected:
 		EXPECT_NE(lines[0].find(part), std::string::npos) << lines[0];
 	}
 
+	// The arguments with "FLAG VALUE" and with "FLAG=VALUE" at the end.
+	static std::pair<std::vector<std::string>, std::vector<std::string>>
+	bothWays(std::vector<std::string> before, const char *flag, const char *value)
+	{
+		std::vector<std::string> joined = before;
+		before.push_back(flag);
+		before.push_back(value);
+		joined.push_back(std::string(flag) + "=" + value);
+		return { before, joined };
+	}
+
 	fs::path dir_;
 };
 
@@ -126,12 +137,9 @@ TEST_F(Programs, BadValuesEitherWay)
 	for (const BadValue &c : cases) {
 		if (!has(c.program))
 			continue;
-		std::vector<std::string> separate = c.before, joined = c.before;
-		separate.push_back(c.flag);
-		separate.push_back(c.value);
-		joined.push_back(std::string(c.flag) + "=" + c.value);
-		expectError(c.program, run(c.program, separate), 2, c.message);
-		expectError(c.program, run(c.program, joined), 2, c.message);
+		const auto args = bothWays(c.before, c.flag, c.value);
+		expectError(c.program, run(c.program, args.first), 2, c.message);
+		expectError(c.program, run(c.program, args.second), 2, c.message);
 	}
 }
 
@@ -158,11 +166,8 @@ TEST_F(Programs, GoodValuesEitherWay)
 	for (const GoodValue &c : cases) {
 		if (!has(c.program))
 			continue;
-		std::vector<std::string> separate = c.before, joined = c.before;
-		separate.push_back(c.flag);
-		separate.push_back(c.value);
-		joined.push_back(std::string(c.flag) + "=" + c.value);
-		const ProcessResult a = run(c.program, separate), b = run(c.program, joined);
+		const auto args = bothWays(c.before, c.flag, c.value);
+		const ProcessResult a = run(c.program, args.first), b = run(c.program, args.second);
 		expectError(c.program, a, 1, c.message);
 		expectError(c.program, b, 1, c.message);
 		EXPECT_EQ(a.err, b.err) << c.program << " " << c.flag;

@@ -209,6 +209,19 @@ bool parseWhole(const std::string &text, long &out)
 	return true;
 }
 
+bool parseFrameSize(const std::string &text, int &width, int &height)
+{
+	const size_t x = text.find('x');
+	long w = 0, h = 0;
+	if (x == std::string::npos || !parseWhole(text.substr(0, x), w) || !parseWhole(text.substr(x + 1), h))
+		return false;
+	if (w < 1 || h < 1 || w > 16384 || h > 16384)
+		return false;
+	width = static_cast<int>(w);
+	height = static_cast<int>(h);
+	return true;
+}
+
 std::string badValue(const ParsedOption &option, const std::string &expected)
 {
 	return option.flag + ": expected " + expected + ", got '" + option.value + "'";

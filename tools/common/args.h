@@ -46,6 +46,9 @@ std::string optionsHelp(const std::vector<OptionSpec> &table, bool withStandard 
 bool parseNumber(const std::string &text, double &out);
 bool parseWhole(const std::string &text, long &out);
 
+// "768x576" with both sides from 1 to 16384 (video and camera frame sizes).
+bool parseFrameSize(const std::string &text, int &width, int &height);
+
 // "--resize: expected a number > 0 and <= 8, got 'x'"
 std::string badValue(const ParsedOption &option, const std::string &expected);
 

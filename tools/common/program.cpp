@@ -43,4 +43,29 @@ int parseCommandLine(const ProgramInfo &program, const std::vector<OptionSpec> &
 	return -1;
 }
 
+int parseCommandLine(const ProgramInfo &program, const std::vector<OptionSpec> &table,
+		     bool allowPositional, int argc, const char *const *argv, ParsedArgs &out,
+		     const OptionTaker &take)
+{
+	const int rc = parseCommandLine(program, table, allowPositional, argc, argv, out);
+	if (rc >= 0)
+		return rc;
+	std::vector<ParsedOption> rest;
+	std::string error;
+	for (ParsedOption &o : out.options) {
+		if (!take(o, error))
+			rest.push_back(std::move(o));
+		else if (!error.empty())
+			return usageError(program, error);
+	}
+	out.options = std::move(rest);
+	return -1;
+}
+
+std::vector<OptionSpec> joinOptions(std::vector<OptionSpec> table, const std::vector<OptionSpec> &more)
+{
+	table.insert(table.end(), more.begin(), more.end());
+	return table;
+}
+
 } // namespace calped::apps

@@ -4,6 +4,7 @@
 // standard error and exit status kExitUsage.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,16 @@ struct ProgramInfo {
 // --version, kExitUsage after a usage error, which is printed).
 int parseCommandLine(const ProgramInfo &program, const std::vector<OptionSpec> &table,
 		     bool allowPositional, int argc, const char *const *argv, ParsedArgs &out);
+
+// The same, then offers each option to `take` first (e.g. takeDetectorOption): those it
+// consumes (returns true) leave out.options, a non-empty error from it is a usage error.
+using OptionTaker = std::function<bool(const ParsedOption &option, std::string &error)>;
+int parseCommandLine(const ProgramInfo &program, const std::vector<OptionSpec> &table,
+		     bool allowPositional, int argc, const char *const *argv, ParsedArgs &out,
+		     const OptionTaker &take);
+
+// `table` with `more` appended (a program's own options and the shared ones).
+std::vector<OptionSpec> joinOptions(std::vector<OptionSpec> table, const std::vector<OptionSpec> &more);
 
 // "calped-detect 0.1.0"
 std::string versionLine(const char *program);

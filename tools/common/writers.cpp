@@ -51,33 +51,37 @@ void writeCsvHeader(FILE *f)
 	std::fputs("frame,x,y,w,h,score,ground_x,ground_y,world_height\n", f);
 }
 
-void writeCsvRows(FILE *f, long frame, const Detections &detections)
+namespace {
+
+// One row per detection: the frame (and MOT's id -1), the box and score, then the world
+// fields or `missing` for each.
+void writeRows(FILE *f, long frame, const Detections &detections, bool mot)
 {
+	const char *missing = mot ? "-1" : "";
 	for (const Detection &d : detections) {
-		std::fprintf(f, "%ld,%.2f,%.2f,%.2f,%.2f,%.4f,", frame, d.x, d.y, d.w, d.h, d.score);
+		std::fprintf(f, mot ? "%ld,-1,%.2f,%.2f,%.2f,%.2f,%.4f," : "%ld,%.2f,%.2f,%.2f,%.2f,%.4f,",
+			     frame, d.x, d.y, d.w, d.h, d.score);
 		if (std::isfinite(d.groundX) && std::isfinite(d.groundY))
 			std::fprintf(f, "%.3f,%.3f,", d.groundX, d.groundY);
 		else
-			std::fputs(",,", f);
+			std::fprintf(f, "%s,%s,", missing, missing);
 		if (std::isfinite(d.worldHeight))
-			std::fprintf(f, "%.3f", d.worldHeight);
-		std::fputc('\n', f);
+			std::fprintf(f, "%.3f\n", d.worldHeight);
+		else
+			std::fprintf(f, "%s\n", missing);
 	}
+}
+
+} // namespace
+
+void writeCsvRows(FILE *f, long frame, const Detections &detections)
+{
+	writeRows(f, frame, detections, false);
 }
 
 void writeMotRows(FILE *f, long frame, const Detections &detections)
 {
-	for (const Detection &d : detections) {
-		std::fprintf(f, "%ld,-1,%.2f,%.2f,%.2f,%.2f,%.4f,", frame, d.x, d.y, d.w, d.h, d.score);
-		if (std::isfinite(d.groundX) && std::isfinite(d.groundY))
-			std::fprintf(f, "%.3f,%.3f,", d.groundX, d.groundY);
-		else
-			std::fputs("-1,-1,", f);
-		if (std::isfinite(d.worldHeight))
-			std::fprintf(f, "%.3f\n", d.worldHeight);
-		else
-			std::fputs("-1\n", f);
-	}
+	writeRows(f, frame, detections, true);
 }
 
 std::string overlayFileName(long long frame)

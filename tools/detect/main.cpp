@@ -55,8 +55,7 @@ struct Options {
 
 std::vector<OptionSpec> optionTable()
 {
-	std::vector<OptionSpec> t = detectorOptionTable(DetectorFlags::All);
-	const std::vector<OptionSpec> own = {
+	return joinOptions(detectorOptionTable(DetectorFlags::All), {
 		{ "csv", "FILE", "write detections as CSV: frame,x,y,w,h,score,ground_x,ground_y,\n"
 				 "world_height (world fields empty without --calib)" },
 		{ "mot", "FILE", "write MOTChallenge detections: frame,-1,x,y,w,h,score,gx,gy,height\n"
@@ -66,25 +65,21 @@ std::vector<OptionSpec> optionTable()
 		{ "overlay-every", "K", "overlay only frames 1, 1+K, 1+2K, ... (default 1)" },
 		{ "max-frames", "N", "stop after the first N frames" },
 		{ "quiet", nullptr, "no progress, warnings or summary on standard error" },
-	};
-	t.insert(t.end(), own.begin(), own.end());
-	return t;
+	});
 }
 
 // -1 to go on, else the exit status.
 int parseOptions(int argc, const char *const *argv, Options &out)
 {
 	ParsedArgs args;
-	const int rc = parseCommandLine(kProgram, optionTable(), true, argc, argv, args);
+	const int rc = parseCommandLine(kProgram, optionTable(), true, argc, argv, args,
+					[&](const ParsedOption &o, std::string &e) {
+						return takeDetectorOption(o, out.detector, e);
+					});
 	if (rc >= 0)
 		return rc;
 	std::string error;
 	for (const ParsedOption &o : args.options) {
-		if (takeDetectorOption(o, out.detector, error)) {
-			if (!error.empty())
-				return usageError(kProgram, error);
-			continue;
-		}
 		const std::string &n = o.name;
 		bool ok = true;
 		if (n == "csv" || n == "mot" || n == "jsonl" || n == "overlay")

@@ -52,9 +52,7 @@ const std::vector<apps::OptionSpec> &evalOptionTable()
 					     "notice without it" },
 			{ "resizes", "LIST", "input resizes (default 1.0)" },
 		};
-		const std::vector<apps::OptionSpec> d = apps::detectorOptionTable(apps::DetectorFlags::Eval);
-		t.insert(t.end(), d.begin(), d.end());
-		const std::vector<apps::OptionSpec> rest = {
+		return apps::joinOptions(apps::joinOptions(t, apps::detectorOptionTable(apps::DetectorFlags::Eval)), {
 			{ "json", "FILE", "one JSON object per (method, resize)" },
 			{ "dets", "DIR", "DIR/<method>_r<resize>.csv: frame,x,y,w,h,score" },
 			{ "frames-jsonl", "DIR", "DIR/<method>_r<resize>.jsonl: calped-detect's JSON frame\n"
@@ -71,9 +69,7 @@ const std::vector<apps::OptionSpec> &evalOptionTable()
 			{ "num-frames", "N", "frames the CSVs cover, when --frames does not say" },
 			{ "label", "NAME", "method name of a single --score-only file (default: file name)" },
 			{ "quiet", nullptr, "no progress or notices on standard error" },
-		};
-		t.insert(t.end(), rest.begin(), rest.end());
-		return t;
+		});
 	}();
 	return table;
 }

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <sys/stat.h>
 
+#include "args.h"
 #include "frame_list.h"
 #include "video_pipe.h"
 #include "external_tools.h"
@@ -75,21 +76,6 @@ private:
 
 } // namespace
 
-bool parseFrameSize(const std::string &text, int &width, int &height)
-{
-	const size_t x = text.find('x');
-	if (x == std::string::npos)
-		return false;
-	long w, h;
-	if (!parseLong(text.substr(0, x), w) || !parseLong(text.substr(x + 1), h))
-		return false;
-	if (w < 1 || h < 1 || w > 16384 || h > 16384)
-		return false;
-	width = static_cast<int>(w);
-	height = static_cast<int>(h);
-	return true;
-}
-
 std::string FrameInput::label(long frame) const
 {
 	if (isVideo())
@@ -151,7 +137,7 @@ bool resolveVideoInput(const std::string &path, const std::string &size, long ma
 		return false;
 	}
 	if (!size.empty()) {
-		if (!parseFrameSize(size, out.width, out.height)) {
+		if (!apps::parseFrameSize(size, out.width, out.height)) {
 			error = "--size must be WIDTHxHEIGHT, e.g. 768x576, got '" + size + "'";
 			return false;
 		}

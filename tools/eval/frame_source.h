@@ -48,7 +48,5 @@ bool resolveFolderInput(const std::string &dir, long maxFrames, FrameInput &out,
 bool resolveVideoInput(const std::string &path, const std::string &size, long maxFrames,
 		       FrameInput &out, std::string &error);
 
-// Parses "768x576".
-bool parseFrameSize(const std::string &text, int &width, int &height);
 
 } // namespace calped::eval_tool
