@@ -17,6 +17,7 @@
 namespace calped::calibrate_tool {
 
 using apps::readTextFile;
+using apps::statusText;
 using apps::writeTextFile;
 
 namespace {
@@ -55,14 +56,6 @@ const std::vector<apps::OptionSpec> kOptions = {
 int fail(int code, const std::string &message)
 {
 	return apps::cliFail(kProgram.name, code, message);
-}
-
-// Strips the "Code: " prefix of a Status message for the tool's one-line errors.
-std::string statusText(const Status &st)
-{
-	const char *text = st.message();
-	const size_t skip = std::strlen(errorCodeName(st.code())) + 2;
-	return std::strlen(text) >= skip ? text + skip : text;
 }
 
 // -1 when parsed, else the exit code.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Turns the command line's INPUTs into the ordered list of frames.
+// Turns the command line's INPUTs into the ordered list of image files.
 #pragma once
 
 #include <string>
@@ -7,12 +7,10 @@
 
 namespace calped::apps {
 
-// True for the extensions a folder is scanned for (case-insensitive).
-bool hasImageExtension(const std::string &path);
-
-// Expands each input in order: a file stays as it is, a folder contributes its image
-// files sorted by name (not recursive). Fails on a missing input or a folder with no
-// images, so a typo never becomes an empty run.
+// Expands each input in order with the file port's listing (ports/file/image_folder.h):
+// a file stays as it is, a folder contributes its image files sorted by name (not
+// recursive). Fails on a missing input or a folder with no images, so a typo never becomes
+// an empty run.
 bool listFrames(const std::vector<std::string> &inputs, std::vector<std::string> &frames,
 		std::string &error);
 
