@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// The one image decoder of the project (stb_image behind stb_guard's checks and a pixel
-// cap) and PNG writing (stb_image_write). Used by the file source and, through it, by every
-// program: nothing else decodes images.
+// The one image decoder of the programs and ports (stb_image behind stb_guard's checks and
+// a pixel cap) and PNG writing (stb_image_write): the file source decodes with it, and so
+// does every program (tools/common links the file port). The core (lib/) has no codec.
 #pragma once
 
 #include <cstddef>

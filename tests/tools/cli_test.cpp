@@ -422,6 +422,7 @@ TEST_F(CliRunTest, JsonlToStdoutAndMaxFrames)
 	EXPECT_EQ(lines[1].rfind("{\"frame\":2,", 0), 0u) << lines[1];
 	// Not quiet: the summary line on stderr counts the frames.
 	EXPECT_NE(r.err.find("summary: frames=2 "), std::string::npos) << r.err;
+	EXPECT_NE(r.err.find(" method=generic\n"), std::string::npos) << r.err;
 }
 
 TEST_F(CliRunTest, ResizeInsideThePyramidIsTheDefault)

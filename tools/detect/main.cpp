@@ -117,6 +117,7 @@ int fail(int code, std::string message)
 struct Input {
 	std::string path;
 	bool video = false;
+	int width = 0, height = 0; // a video's frame size (ffprobe)
 };
 
 bool listInputs(const std::vector<std::string> &paths, std::vector<Input> &out,
@@ -187,12 +188,14 @@ int run(const Options &opt)
 	// the largest frame, so frames of mixed sizes all fit.
 	int maxW = 0, maxH = 0;
 	ports::ImageDecoder decoder;
-	for (const Input &in : inputs) {
+	for (Input &in : inputs) {
 		int w = 0, h = 0;
 		if (in.video) {
 			const Status st = ports::probeVideo(in.path, w, h);
 			if (!st.ok())
 				return fail(kExitRuntime, st.message());
+			in.width = w;
+			in.height = h;
 		} else if (!decoder.probe(in.path, w, h, error)) {
 			return fail(kExitRuntime, error);
 		}
@@ -230,16 +233,13 @@ int run(const Options &opt)
 	ports::VideoPipe pipe;
 	long frame = 0;
 	for (const Input &in : inputs) {
-		int videoW = 0, videoH = 0;
 		if (in.video) {
-			Status st = ports::probeVideo(in.path, videoW, videoH);
-			if (st.ok())
-				st = pipe.open(in.path, videoW, videoH);
+			const Status st = pipe.open(in.path, in.width, in.height);
 			if (!st.ok())
 				return fail(kExitRuntime, st.message());
-			image.width = videoW;
-			image.height = videoH;
-			image.pixels.resize(static_cast<size_t>(videoW) * videoH * 3);
+			image.width = in.width;
+			image.height = in.height;
+			image.pixels.resize(static_cast<size_t>(in.width) * in.height * 3);
 		}
 		for (;;) {
 			if (opt.maxFrames > 0 && frame >= opt.maxFrames)
@@ -286,7 +286,7 @@ int run(const Options &opt)
 	if (!out.csv.close(error) || !out.mot.close(error) || !out.jsonl.close(error))
 		return fail(kExitRuntime, error);
 	if (!opt.quiet)
-		stats.printSummary();
+		stats.printSummary(method);
 	return 0;
 }
 

@@ -65,15 +65,16 @@ void RunStats::printProgress() const
 		     frames(), total, meanMs(), wall > 0 ? frames() / wall : 0.0);
 }
 
-void RunStats::printSummary() const
+void RunStats::printSummary(const char *method) const
 {
 	// Stable key=value format: scripts/run-main.sh reads it (documented in docs/cli.md).
 	long n = frames();
 	std::fprintf(stderr,
 		     "calped-detect: summary: frames=%ld detections=%llu per_frame=%.2f "
-		     "ms_median=%.2f ms_mean=%.2f wall_s=%.2f\n",
+		     "ms_median=%.2f ms_mean=%.2f wall_s=%.2f method=%s\n",
 		     n, static_cast<unsigned long long>(detections_),
-		     n ? static_cast<double>(detections_) / n : 0.0, medianMs(), meanMs(), wallSeconds());
+		     n ? static_cast<double>(detections_) / n : 0.0, medianMs(), meanMs(), wallSeconds(),
+		     method);
 }
 
 } // namespace calped::apps

@@ -20,7 +20,8 @@ public:
 	bool progressDue();
 
 	void printProgress() const; // "calped-detect: 120/795 frames, ..." on stderr
-	void printSummary() const;  // "calped-detect: summary: frames=... ms_median=..."
+	// "calped-detect: summary: frames=... ms_median=... method=calibrated"
+	void printSummary(const char *method) const;
 
 	long frames() const { return static_cast<long>(ms_.size()); }
 	uint64_t detections() const { return detections_; }
