@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "args.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -48,7 +49,9 @@ bool parseArgs(int argc, const char *const *argv, const std::vector<OptionSpec> 
 {
 	out = ParsedArgs();
 	std::vector<struct option> longs;
-	std::string shorts = ":h"; // ':' first: a missing value is reported as ':'
+	// '-': arguments that are not options come back in order as 1 (whatever POSIXLY_CORRECT
+	// says); ':': a missing value is reported as ':'.
+	std::string shorts = "-:h";
 	for (size_t i = 0; i < table.size(); i++) {
 		if (!table[i].name)
 			continue; // a heading
@@ -77,6 +80,10 @@ bool parseArgs(int argc, const char *const *argv, const std::vector<OptionSpec> 
 		const int c = getopt_long(argc, args.data(), shorts.c_str(), longs.data(), nullptr);
 		if (c == -1)
 			break;
+		if (c == 1) {
+			out.positional.push_back(optarg);
+			continue;
+		}
 		// The option just read is argv[optind - 1], or argv[optind - 2] when its value
 		// was the next argument.
 		const int at = optarg && optind >= 2 && optarg == args[optind - 1] ? optind - 2
@@ -183,9 +190,19 @@ std::string optionsHelp(const std::vector<OptionSpec> &table, bool withStandard)
 	return text;
 }
 
+namespace {
+
+// strtod and strtol skip leading space: "whole string" means none either.
+bool startsWithSpace(const std::string &text)
+{
+	return !text.empty() && std::isspace(static_cast<unsigned char>(text[0]));
+}
+
+} // namespace
+
 bool parseNumber(const std::string &text, double &out)
 {
-	if (text.empty())
+	if (text.empty() || startsWithSpace(text))
 		return false;
 	errno = 0;
 	char *end = nullptr;
@@ -198,7 +215,7 @@ bool parseNumber(const std::string &text, double &out)
 
 bool parseWhole(const std::string &text, long &out)
 {
-	if (text.empty())
+	if (text.empty() || startsWithSpace(text))
 		return false;
 	errno = 0;
 	char *end = nullptr;

@@ -117,7 +117,7 @@ bool parseEvalOptions(int argc, const char *const *argv, EvalOptions &out, std::
 				}
 			}
 			if (out.methods.empty()) {
-				error = "--methods needs at least one method (known: " + methodNames() + ")";
+				error = o.flag + " needs at least one method (known: " + methodNames() + ")";
 				return false;
 			}
 		} else if (arg == "resizes") {
@@ -133,7 +133,7 @@ bool parseEvalOptions(int argc, const char *const *argv, EvalOptions &out, std::
 					out.resizes.push_back(r);
 			}
 			if (out.resizes.empty()) {
-				error = "--resizes needs at least one value";
+				error = o.flag + " needs at least one value";
 				return false;
 			}
 		} else if (arg == "json") {
@@ -177,7 +177,7 @@ bool parseEvalOptions(int argc, const char *const *argv, EvalOptions &out, std::
 		} else if (arg == "score-only") {
 			out.scoreOnly = splitList(value);
 			if (out.scoreOnly.empty()) {
-				error = "--score-only needs at least one CSV file";
+				error = o.flag + " needs at least one CSV file";
 				return false;
 			}
 		} else if (arg == "label") {

@@ -41,7 +41,9 @@ std::vector<std::string> splitCsvLine(const std::string &line)
 
 bool parseDouble(const std::string &text, double &out)
 {
-	return apps::parseNumber(text, out);
+	// Leading space is allowed in the data files (strtod's rule), not on command lines.
+	const size_t start = text.find_first_not_of(" \t\n\r\f\v");
+	return start != std::string::npos && apps::parseNumber(text.substr(start), out);
 }
 
 bool parseLong(const std::string &text, long &out)
