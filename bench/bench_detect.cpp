@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Per-frame time of the generic detector on a folder of frames, one core: frames are
-// decoded first, then each is detected `--repeat` times; prints median and mean per
-// stage. Usage:
-//   bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--first F]
-//                [--count N] [--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]]
-//                [--reject-static] [--format NAME]
+// Per-frame time of the detector on a folder of frames, one core: frames are decoded
+// first, then each is detected `--repeat` times; prints median and mean per stage. Usage:
+//   bench_detect --frames DIR [--first F] [--count N] [--repeat K] [--format NAME]
+//                DETECTOR FLAGS (calped-detect's: --model BLOB [--calib FILE] [--method M]
+//                [--resize R] [--resize-at pyramid|frame] [--levels placed|toolbox]
+//                [--reject-static] ..., docs/cli.md)
 // --first: the F-th frame (1-based, in name order) is the first. --reject-static: static-
 // scene rejection (and its gate of the sparse grid), whose background takes 50 frames.
 // --format converts the decoded frames to a camera pixel format first (NV12, YUYV,
@@ -18,6 +18,9 @@
 #include <vector>
 
 #include <calped/calped.h>
+
+#include "detector_options.h"
+#include "program.h"
 
 #include "pixel_formats.h"
 #include "test_data.h"
@@ -43,54 +46,56 @@ double mean(const std::vector<double> &v)
 	return v.empty() ? 0 : s / v.size();
 }
 
-int usage()
-{
-	std::fprintf(stderr, "usage: bench_detect --model BLOB --frames DIR [--resize R [--resize-in-pyramid]] [--first F] [--count N] "
-			     "[--repeat K] [--calib FILE [--calibrated [--calibrated-pyramid]]] [--reject-static] [--format NAME]\n");
-	return 2;
-}
+const apps::ProgramInfo kProgram = {
+	"bench_detect",
+	"usage: bench_detect --model BLOB --frames DIR [options]\n"
+	"\n"
+	"Times the detector per frame and stage on a folder of PNG frames (docs/benchmarks.md).\n"
+	"\n"
+	"options:\n",
+	"",
+};
 
 } // namespace
 
 int main(int argc, char **argv)
 {
-	std::string modelPath, framesDir, calibPath, formatName = "RGB8";
-	double resize = 1.0;
-	int first = 1, count = 50, repeat = 1; // first: 1-based, in name order
-	bool calibrated = false, resizeInPyramid = false, calibratedPyramid = false, rejectStatic = false;
-	for (int i = 1; i < argc; i++) {
-		const std::string a = argv[i];
-		if (a == "--reject-static") {
-			rejectStatic = true;
-			continue;
+	const std::vector<apps::OptionSpec> own = {
+		{ "frames", "DIR", "the PNG frames, in name order" },
+		{ "first", "F", "start at the F-th frame (1-based, default 1)" },
+		{ "count", "N", "frames to time (default 50)" },
+		{ "repeat", "K", "detect each frame K times (default 1)" },
+		{ "format", "NAME", "convert the frames to this camera pixel format first (NV12, YUYV,\n"
+				    "BayerRGGB8, ...; default RGB8), so the input conversion is timed" },
+	};
+	apps::DetectorOptions options;
+	apps::ParsedArgs args;
+	const int rc = apps::parseCommandLine(
+		kProgram, apps::joinOptions(own, apps::detectorOptionTable(apps::DetectorFlags::All)), false,
+		argc, argv, args, [&](const apps::ParsedOption &o, std::string &e) {
+			return apps::takeDetectorOption(o, options, e);
+		});
+	if (rc >= 0)
+		return rc;
+	std::string framesDir, formatName = "RGB8", error;
+	long first = 1, count = 50, repeat = 1; // first: 1-based, in name order
+	for (const apps::ParsedOption &o : args.options) {
+		if (o.name == "frames") {
+			framesDir = o.value;
+		} else if (o.name == "format") {
+			formatName = o.value;
+		} else {
+			apps::wholeIn(o, 1, 1000000, o.name == "first" ? first : o.name == "count" ? count : repeat,
+				      error);
 		}
-		if (a == "--calibrated" || a == "--resize-in-pyramid" || a == "--calibrated-pyramid") {
-			(a == "--calibrated" ? calibrated : a == "--resize-in-pyramid" ? resizeInPyramid : calibratedPyramid) = true;
-			continue;
-		}
-		if (i + 1 >= argc)
-			return usage();
-		if (a == "--model")
-			modelPath = argv[++i];
-		else if (a == "--frames")
-			framesDir = argv[++i];
-		else if (a == "--resize")
-			resize = std::atof(argv[++i]);
-		else if (a == "--first")
-			first = std::atoi(argv[++i]);
-		else if (a == "--count")
-			count = std::atoi(argv[++i]);
-		else if (a == "--repeat")
-			repeat = std::atoi(argv[++i]);
-		else if (a == "--calib")
-			calibPath = argv[++i];
-		else if (a == "--format")
-			formatName = argv[++i];
-		else
-			return usage();
+		if (!error.empty())
+			return apps::usageError(kProgram, error);
 	}
-	if (modelPath.empty() || framesDir.empty() || first < 1 || count < 1 || repeat < 1)
-		return usage();
+	if (framesDir.empty())
+		return apps::usageError(kProgram, "missing --frames DIR (try --help)");
+	if (!apps::checkDetectorOptions(options, true, apps::DetectorFlags::All, error))
+		return apps::usageError(kProgram, error);
+	const bool calibrated = options.calibrated();
 	PixelFormat format = PixelFormat::RGB8;
 	bool formatKnown = false;
 	for (int f = int(PixelFormat::RGB8); f <= int(PixelFormat::BayerBGGR8); f++)
@@ -103,15 +108,9 @@ int main(int argc, char **argv)
 		return 2;
 	}
 
-	std::vector<uint8_t> blob;
-	Model model;
-	if (!test::readFile(modelPath, blob)) {
-		std::fprintf(stderr, "bench_detect: cannot read %s\n", modelPath.c_str());
-		return 1;
-	}
-	Status st = loadModel(blob.data(), blob.size(), model);
-	if (!st.ok()) {
-		std::fprintf(stderr, "bench_detect: %s: %s\n", modelPath.c_str(), st.message());
+	apps::DetectorInputs loaded;
+	if (!apps::loadDetectorInputs(options, loaded, error)) {
+		std::fprintf(stderr, "bench_detect: %s\n", error.c_str());
 		return 1;
 	}
 
@@ -141,38 +140,11 @@ int main(int argc, char **argv)
 	for (const auto &f : frames)
 		inputs.push_back(test::encodeImage(f.pixels.data(), f.width, f.height, format));
 
-	DetectorConfig cfg;
-	cfg.maxWidth = frames[0].width;
-	cfg.maxHeight = frames[0].height;
-	cfg.resize = resize;
-	cfg.resizeAt = resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
-	if (rejectStatic) // fixed camera: frames must be consecutive
-		cfg.staticRejection = StaticRejection();
-	CameraModel camera;
-	if (!calibPath.empty()) {
-		std::vector<uint8_t> text;
-		if (!test::readFile(calibPath, text)) {
-			std::fprintf(stderr, "bench_detect: cannot read %s\n", calibPath.c_str());
-			return 1;
-		}
-		st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
-				     calibPath.c_str(), camera);
-		if (!st.ok()) {
-			std::fprintf(stderr, "bench_detect: %s\n", st.message());
-			return 1;
-		}
-		cfg.camera = &camera;
-	}
-	cfg.method = calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;
-	if (calibrated) {
-		CalibratedSettings cal;
-		cal.levels = calibratedPyramid ? PyramidLevels::Placed : PyramidLevels::Toolbox;
-		cfg.calibrated = cal;
-	}
+	// Static rejection (--reject-static) needs consecutive frames of one camera.
 	std::unique_ptr<Detector> det;
-	st = Detector::create(model, cfg, det);
-	if (!st.ok()) {
-		std::fprintf(stderr, "bench_detect: %s\n", st.message());
+	if (!apps::createDetector(loaded.model, options, frames[0].width, frames[0].height,
+				  loaded.hasCamera ? &loaded.camera : nullptr, det, error)) {
+		std::fprintf(stderr, "bench_detect: %s\n", error.c_str());
 		return 1;
 	}
 
@@ -180,7 +152,7 @@ int main(int argc, char **argv)
 	uint64_t windows = 0, detections = 0;
 	int levels = 0, computed = 0;
 	Detections out;
-	det->detect(inputs[0].view(), out); // warm-up
+	Status st = det->detect(inputs[0].view(), out); // warm-up
 	for (int r = 0; r < repeat; r++)
 		for (const auto &f : inputs) {
 			st = det->detect(f.view(), out);
@@ -201,9 +173,9 @@ int main(int argc, char **argv)
 			computed = s.computedLevels;
 		}
 	const double n = double(total.size());
-	std::printf("%s %s, frames %zu x %d, %dx%d, resize %.2f: %d levels (%d computed), %.0f windows/frame, %.2f detections/frame\n",
+	std::printf("%s %s, frames %zu x %ld, %dx%d, resize %.2f: %d levels (%d computed), %.0f windows/frame, %.2f detections/frame\n",
 		    calibrated ? "calibrated" : "generic", pixelFormatName(format), frames.size(), repeat, frames[0].width,
-		    frames[0].height, resize, levels, computed,
+		    frames[0].height, options.resize, levels, computed,
 		    windows / n, detections / n);
 	std::printf("ms per frame      median   mean\n");
 	std::printf("  total          %7.2f %7.2f\n", median(total), mean(total));

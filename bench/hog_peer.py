@@ -128,6 +128,7 @@ def main():
     dets = os.path.join(args.out, "dets")
     run([args.eval, "--frames", args.frames, "--max-frames", str(n), "--gt", args.gt,
          "--model", args.model, "--methods", "generic", "--resizes", f"{args.resize:g}",
+         "--resize-at", "frame",
          "--json", calped_json, "--dets", dets, "--quiet"])
     ours_csv = os.path.join(dets, f"generic_{tag}.csv")
     scored_json = os.path.join(args.out, "scored.json")

@@ -49,7 +49,7 @@ profile() { # name, first frame, frames, bench arguments... -> $tmp/name.tsv: ke
 	valgrind --tool=callgrind --callgrind-out-file="$tmp/$name.out" \
 		--toggle-collect='calped::Detector::detect*' "$bench" --model "$model" \
 		--frames data/pets/frames --first "$from" --count "$count" --repeat 1 --resize 2 \
-		--resize-in-pyramid --calib "$calib" "$@" >/dev/null 2>&1
+		--calib "$calib" "$@" >/dev/null 2>&1
 	# Self cost per function, grouped: kernels by name without their build suffix (the
 	# resampler's column pass counts as resampling), everything else as "other".
 	callgrind_annotate --threshold=100 "$tmp/$name.out" 2>/dev/null | awk '
@@ -76,17 +76,17 @@ perFrame() { # out, frames, a.tsv [b.tsv]
 }
 
 # bench_detect detects its first frame once more before timing: 4 calls for 3 frames.
-profile generic "$first" 3
+profile generic "$first" 3 --method generic
 perFrame "$tmp/generic.pf" 4 "$tmp/generic.tsv"
 if [[ -n $static ]]; then
 	label="calibrated-static, placed"
-	profile all "$((first - 50))" 53 --calibrated --calibrated-pyramid --reject-static &
-	profile warmup "$((first - 50))" 50 --calibrated --calibrated-pyramid --reject-static &
+	profile all "$((first - 50))" 53 --reject-static &
+	profile warmup "$((first - 50))" 50 --reject-static &
 	wait
 	perFrame "$tmp/calibrated.pf" 3 "$tmp/all.tsv" "$tmp/warmup.tsv"
 else
 	label="calibrated, placed"
-	profile calibrated "$first" 3 --calibrated --calibrated-pyramid
+	profile calibrated "$first" 3
 	perFrame "$tmp/calibrated.pf" 4 "$tmp/calibrated.tsv"
 fi
 

@@ -54,7 +54,7 @@ for height in 1.0 1.5 2.0; do
 		writeP "$height" "$pitch" "$calib"
 		echo "camera $height m, pitch $pitch deg:"
 		run generic --resize 1
-		run calibrated --resize 1 --calib "$calib" --calibrated
-		run "calibrated, placed levels" --resize 1 --calib "$calib" --calibrated --calibrated-pyramid
+		run calibrated --resize 1 --calib "$calib" --levels toolbox
+		run "calibrated, placed levels" --resize 1 --calib "$calib"
 	done
 done

@@ -23,7 +23,7 @@ for resize in 1 2; do
 	echo
 	echo "== resize $resize, $frames frames, median of 3 passes"
 	taskset -c 0 "$bench" --model "$model" --frames data/pets/frames --count "$frames" \
-		--resize "$resize" --repeat 3 | tee /tmp/calped-bench.txt
+		--resize "$resize" --resize-at frame --repeat 3 | tee /tmp/calped-bench.txt
 	ours=$(awk '/^  total/ {print $2}' /tmp/calped-bench.txt)
 	awk -v o="$ours" -v t="${toolbox[$resize]}" \
 		'BEGIN {printf "toolbox median %.1f ms, calped median %.2f ms: %.2fx faster\n", t, o, t / o}'
@@ -31,7 +31,7 @@ for resize in 1 2; do
 		# Count only inside Detector::detect: the warm-up call and 2 timed frames.
 		valgrind --tool=callgrind --callgrind-out-file=/tmp/calped-callgrind.out \
 			--toggle-collect='calped::Detector::detect*' "$bench" --model "$model" \
-			--frames data/pets/frames --count 2 --resize "$resize" >/dev/null 2>&1
+			--frames data/pets/frames --count 2 --resize "$resize" --resize-at frame >/dev/null 2>&1
 		ir=$(callgrind_annotate /tmp/calped-callgrind.out 2>/dev/null |
 			awk '/PROGRAM TOTALS/ {gsub(",", "", $1); print $1}')
 		awk -v ir="$ir" 'BEGIN {printf "callgrind: %.1f million instructions per frame\n", ir / 3 / 1e6}'

@@ -21,6 +21,8 @@
 
 #include <calped/calped.h>
 
+#include "detector_options.h"
+
 #include "aravis_source.h"
 #include "fake_gv_camera.h"
 
@@ -104,9 +106,9 @@ std::unique_ptr<calped::Detector> makeDetector(const std::string &path, int w, i
 	calped::Model model;
 	if (!calped::loadModel(blob.data(), blob.size(), model).ok())
 		return nullptr;
-	calped::DetectorConfig config;
-	config.maxWidth = w;
-	config.maxHeight = h;
+	// The programs' DetectorConfig (tools/common) at its defaults: generic, resize 1.
+	const calped::DetectorConfig config =
+		calped::apps::makeDetectorConfig(calped::apps::DetectorOptions(), w, h, nullptr);
 	std::unique_ptr<calped::Detector> det;
 	if (!calped::Detector::create(model, config, det).ok())
 		return nullptr;

@@ -23,6 +23,8 @@
 
 #include <calped/calped.h>
 
+#include "detector_options.h"
+
 #include "test_data.h"
 
 // --- Counting allocator. With glibc and no sanitizer, malloc itself is counted (operator
@@ -259,12 +261,16 @@ int main(int argc, char **argv)
 	}
 	const long rssFrames = residentBytes();
 
-	DetectorConfig cfg;
-	cfg.maxWidth = frames[0].width;
-	cfg.maxHeight = frames[0].height;
-	cfg.resize = opt.resize;
-	cfg.camera = &camera;
-	cfg.method = opt.generic ? DetectionMethod::Generic : DetectionMethod::Calibrated;
+	// The programs' DetectorConfig (tools/common); the soak keeps resizing the frame first
+	// with the toolbox's octaves, as it always ran.
+	apps::DetectorOptions detectorOptions;
+	detectorOptions.calibPath = opt.calib;
+	detectorOptions.method = opt.generic ? apps::MethodChoice::Generic : apps::MethodChoice::Calibrated;
+	detectorOptions.resize = opt.resize;
+	detectorOptions.resizeAt = apps::ResizeChoice::Frame;
+	detectorOptions.levels = apps::LevelsChoice::Toolbox;
+	const DetectorConfig cfg =
+		apps::makeDetectorConfig(detectorOptions, frames[0].width, frames[0].height, &camera);
 	std::unique_ptr<Detector> det;
 	st = Detector::create(model, cfg, det);
 	if (!st.ok()) {

@@ -54,7 +54,7 @@ repeat=4
 count() {
 	"$qemu" -d plugin -plugin "$plugin" -L "$runtime" -E "LD_LIBRARY_PATH=$runtime/lib" \
 		"$bench" --model "$model" --frames data/pets/frames --count "$frames" \
-		--resize "$resize" --repeat "$1" 2>&1 >/dev/null | awk '/^insns / {print $2}'
+		--resize "$resize" --resize-at frame --repeat "$1" 2>&1 >/dev/null | awk '/^insns / {print $2}'
 }
 
 flags=$(meson introspect --buildoptions "$builddir" |

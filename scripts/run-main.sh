@@ -2,21 +2,24 @@
 # SPDX-License-Identifier: BSD-2-Clause
 # THE MAIN JOB: calibrated detection over the whole PETS 2009 S2L1 sequence (795 frames),
 # with the camera's Tsai calibration (../shared/data/pets2009-s2l1/View_001.xml).
-#   out/main/detections.csv   frame,x,y,w,h,score for every detection
+#   out/main/detections.csv   frame,x,y,w,h,score,ground_x,ground_y,world_height for every
+#                             detection
 #   out/main/frames.jsonl     one line per frame with the detector's time, and each
 #                             detection's ground position and world height
 #   out/main/overlays/        every 100th frame with the detections drawn
 #   out/main/summary.txt      the table printed at the end
-# (with --reject-static: PETS is a fixed camera; resize inside the pyramid and placed pyramid
-# levels, docs/calibrated.md). Then the evaluation (docs/evaluation.md):
+# (calped-detect's defaults with --calib: the calibrated method, resize inside the pyramid,
+# placed pyramid levels; plus --reject-static: PETS is a fixed camera; docs/calibrated.md).
+# Then the evaluation (docs/evaluation.md):
 # calped-eval runs the generic, calibrated and calibrated-static methods at resizes 1.5,
-# 2.0 and 2.5 against the ground truth and writes
+# 2.0 and 2.5 against the ground truth, each frame resized first and with the toolbox's
+# octaves as the thesis does (--resize-at frame --levels toolbox), and writes
 #   docs/results.md           tables, plots and sample frames, machine, date and commit
-#   docs/results/             the plots and overlays it links
+#   docs/results/             the plots, and the overlays it links (docs/results/<run>/)
 #   out/main/eval.json        one object per (method, resize); out/main/dets/ their CSVs
-# and again with the resize done inside the feature pyramid (tables in results.md,
+# and again with the resize done inside the feature pyramid (--levels toolbox; tables in results.md,
 # out/main/eval_in_pyramid.json, out/main/dets_in_pyramid/), and the calibrated methods with
-# placed pyramid levels as well (out/main/eval_placed.json, out/main/dets_placed/).
+# placed pyramid levels, the defaults (out/main/eval_placed.json, out/main/dets_placed/).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -37,12 +40,12 @@ rm -rf "$out"
 mkdir -p "$out"
 
 calib=${CALPED_SHARED_DIR:-../shared}/data/pets2009-s2l1/View_001.xml
-# The fastest configuration that meets the issue's accuracy targets: resize inside the
-# pyramid, computed levels placed among the needed ones, static-scene rejection
-# (docs/calibrated.md).
+# The fastest configuration that meets the issue's accuracy targets is calped-detect's
+# default with a calibration: the calibrated method, the resize inside the pyramid, computed
+# levels placed among the needed ones; static-scene rejection is asked for, as it assumes a
+# fixed camera (docs/calibrated.md, docs/cli.md).
 cmd=("$builddir"/tools/detect/calped-detect --model "$model" --resize "$resize"
-	--resize-in-pyramid --calibrated-pyramid
-	--calib "$calib" --method calibrated --reject-static
+	--calib "$calib" --reject-static
 	--csv "$out/detections.csv" --jsonl "$out/frames.jsonl"
 	--overlay "$out/overlays" --overlay-every 100 "$frames")
 echo "run-main: ${cmd[*]}"
@@ -95,28 +98,29 @@ page=docs/results.md
 # reports grows with them. CALPED_EVAL_JOBS=N trades that for wall time.
 eval_jobs=${CALPED_EVAL_JOBS:-1}
 mkdir -p "$results" "$out/plots"
-find "$results" -maxdepth 1 -type f -name '*.png' -delete
+find "$results" -maxdepth 2 -type f -name '*.png' -delete
+# First as the thesis does it: each frame resized, then the toolbox's octaves.
 ecmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
 	--methods generic,calibrated,calibrated-static --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
+	--resize-at frame --levels toolbox
 	--json "$out/eval.json" --dets "$out/dets" --plots "$results" --overlays "$results"
 	--overlay-frames 1,200,400,600 --markdown "$page.part")
 echo "run-main: ${ecmd[*]}"
 "${ecmd[@]}" | tee "$out/eval.txt"
 # The plots' data and gnuplot scripts are for redrawing, not for reading: keep them in out/.
 find "$results" -maxdepth 1 -type f \( -name '*.dat' -o -name '*.gp' \) -exec mv -t "$out/plots" {} +
-# The same runs with the resize done inside the feature pyramid (DetectorConfig::
-# resizeInPyramid, the toolbox's nOctUp): tables only, beside the ones above.
+# The same runs with the resize done inside the feature pyramid (--resize-at pyramid, the
+# default: the toolbox's nOctUp), still with the toolbox's octaves: tables only.
 pcmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
 	--methods generic,calibrated,calibrated-static --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
-	--resize-in-pyramid
+	--levels toolbox
 	--json "$out/eval_in_pyramid.json" --dets "$out/dets_in_pyramid" --markdown "$page.pyramid")
 echo "run-main: ${pcmd[*]}"
 "${pcmd[@]}" | tee "$out/eval_in_pyramid.txt"
-# And with the computed levels placed among the needed ones (DetectorConfig::
-# calibratedPyramid, calibrated methods only).
+# And with the defaults: computed levels placed among the needed ones (--levels placed,
+# calibrated methods only), the resize inside the pyramid.
 lcmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
 	--methods calibrated,calibrated-static --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
-	--resize-in-pyramid --calibrated-pyramid
 	--json "$out/eval_placed.json" --dets "$out/dets_placed" --markdown "$page.placed")
 echo "run-main: ${lcmd[*]}"
 "${lcmd[@]}" | tee "$out/eval_placed.txt"
@@ -139,7 +143,8 @@ cpu=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
 	echo
 	echo "## Resize inside the pyramid"
 	echo
-	echo "The same runs with \`--resize-in-pyramid\`: colour is converted at the frame's size and each"
+	echo "The same runs with the resize inside the pyramid (\`--resize-at pyramid\`, the default) and the"
+	echo "toolbox's octaves (\`--levels toolbox\`): colour is converted at the frame's size and each"
 	echo "computed level resampled from it (the toolbox's nOctUp) instead of the frame being resized"
 	echo "first ([calibrated.md](calibrated.md#resize-inside-the-pyramid))."
 	echo
@@ -147,7 +152,7 @@ cpu=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
 	echo
 	echo "## Placed pyramid levels"
 	echo
-	echo "The calibrated methods again inside the pyramid, with \`--calibrated-pyramid\`: channels"
+	echo "The calibrated methods with the defaults (resize inside the pyramid, \`--levels placed\`): channels"
 	echo "computed at levels placed among the needed ones instead of the toolbox's octaves"
 	echo "([calibrated.md](calibrated.md#placed-pyramid-levels)). Compare the ms/frame with the"
 	echo "generic mode of the first table."

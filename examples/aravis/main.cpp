@@ -15,35 +15,21 @@
 #include "cli_error.h"
 #include "live_loop.h"
 #include "live_options.h"
+#include "program.h"
 
 namespace {
 
-const char *kProgram = "calped-aravis";
+using namespace calped;
 
-void printUsage()
-{
-	std::fputs("usage: calped-aravis --camera ID --model BLOB [options]\n"
-		   "\n"
-		   "Runs the detector live on a GigE Vision camera through Aravis.\n"
-		   "\n"
-		   "camera options:\n"
-		   "  --camera ID         Aravis device id or IP address (default: the first camera)\n"
-		   "  --pixel-format F    GenICam PixelFormat: Mono8, RGB8, BGR8, YUV422_YUYV_Packed,\n"
-		   "                      BayerRG8, ... (default: the camera's)\n"
-		   "  --width W, --height H   region size (default: the camera's)\n"
-		   "  --fps F             acquisition frame rate (default: the camera's)\n"
-		   "  --buffers N         buffer pool size, 2..64 (default 4)\n"
-		   "  --packet-size B     GigE packet size in bytes (default: the camera's)\n"
-		   "  --socket-buffer B   UDP receive buffer bytes (default: 4 payloads, 1..64 MiB)\n"
-		   "  --packet-socket     use Aravis's packet socket (needs CAP_NET_RAW; default off)\n"
-		   "  --no-packet-resend  never ask the camera to resend lost packets\n"
-		   "  --packet-timeout MS, --frame-retention MS   Aravis stream timeouts\n"
-		   "  --lost-after MS     no frame for MS: check the camera answers (default 2000)\n"
-		   "  --reconnect         reopen the camera after a loss instead of exiting\n"
-		   "\n",
-		   stdout);
-	std::fputs(calped::live::liveUsageText(), stdout);
-}
+const apps::ProgramInfo kProgram = {
+	"calped-aravis",
+	"usage: calped-aravis --camera ID --model BLOB [options]\n"
+	"\n"
+	"Runs the detector live on a GigE Vision camera through Aravis.\n"
+	"\n"
+	"camera options:\n",
+	live::liveEpilogue(),
+};
 
 // Adds Aravis's transport counters to the stats line.
 class AravisReporter : public calped::live::StatsReporter
@@ -62,95 +48,92 @@ private:
 	const calped::ports::AravisSource &source_;
 };
 
-bool parseCount(const calped::live::Arg &arg, long lo, long hi, int &out, std::string &error)
-{
-	long v = 0;
-	if (!calped::live::parseWhole(arg.value, v) || v < lo || v > hi) {
-		error = arg.name + " must be a whole number from " + std::to_string(lo) + " to " +
-			std::to_string(hi) + ", got '" + arg.value + "'";
-		return false;
-	}
-	out = static_cast<int>(v);
-	return true;
-}
-
 int run(int argc, char **argv)
 {
-	using namespace calped;
-	std::vector<live::Arg> args;
-	std::string error;
-	if (!live::splitArgs(argc, argv, { "--packet-socket", "--no-packet-resend", "--reconnect" },
-			     { "--camera", "--pixel-format", "--width", "--height", "--fps", "--buffers",
-			       "--packet-size", "--socket-buffer", "--packet-timeout", "--frame-retention",
-			       "--lost-after" },
-			     args, error))
-		return cliFail(kProgram, kExitUsage, error);
+	const std::vector<apps::OptionSpec> own = {
+		{ "camera", "ID", "Aravis device id or IP address (default: the first camera)" },
+		{ "pixel-format", "F", "GenICam PixelFormat: Mono8, RGB8, BGR8, YUV422_YUYV_Packed,\n"
+				       "BayerRG8, ... (default: the camera's)" },
+		{ "width", "W", "region width (default: the camera's)" },
+		{ "height", "H", "region height (default: the camera's)" },
+		{ "fps", "F", "acquisition frame rate (default: the camera's)" },
+		{ "buffers", "N", "buffer pool size, 2..64 (default 4)" },
+		{ "packet-size", "B", "GigE packet size in bytes (default: the camera's)" },
+		{ "socket-buffer", "B", "UDP receive buffer bytes (default: 4 payloads, 1..64 MiB)" },
+		{ "packet-socket", nullptr, "use Aravis's packet socket (needs CAP_NET_RAW; default off)" },
+		{ "no-packet-resend", nullptr, "never ask the camera to resend lost packets" },
+		{ "packet-timeout", "MS", "Aravis stream packet timeout" },
+		{ "frame-retention", "MS", "Aravis stream frame retention" },
+		{ "lost-after", "MS", "no frame for MS: check the camera answers (default 2000)" },
+		{ "reconnect", nullptr, "reopen the camera after a loss instead of exiting" },
+	};
 	live::LiveOptions options;
+	apps::ParsedArgs args;
+	const int rc = live::parseLiveCommandLine(kProgram, own, argc, argv, options, args);
+	if (rc >= 0)
+		return rc;
 	ports::AravisOptions cam;
-	for (const live::Arg &arg : args) {
-		const live::ParseResult r = live::parseLiveOption(arg, options, error);
-		if (r == live::ParseResult::Error)
-			return cliFail(kProgram, kExitUsage, error);
-		if (r == live::ParseResult::Ok)
-			continue;
-		const std::string &n = arg.name;
-		bool ok = true;
-		if (n == "--camera")
-			cam.camera = arg.value;
-		else if (n == "--pixel-format")
-			cam.pixelFormat = arg.value;
-		else if (n == "--width")
-			ok = parseCount(arg, 1, 65535, cam.width, error);
-		else if (n == "--height")
-			ok = parseCount(arg, 1, 65535, cam.height, error);
-		else if (n == "--buffers")
-			ok = parseCount(arg, 2, 64, cam.buffers, error);
-		else if (n == "--packet-size")
-			ok = parseCount(arg, 576, 65535, cam.packetSize, error);
-		else if (n == "--socket-buffer")
-			ok = parseCount(arg, 65536, 1 << 30, cam.socketBufferBytes, error);
-		else if (n == "--packet-timeout")
-			ok = parseCount(arg, 1, 10000, cam.packetTimeoutMs, error);
-		else if (n == "--frame-retention")
-			ok = parseCount(arg, 1, 60000, cam.frameRetentionMs, error);
-		else if (n == "--lost-after")
-			ok = parseCount(arg, 100, 600000, cam.lostAfterMs, error);
-		else if (n == "--packet-socket")
+	std::string error;
+	for (const apps::ParsedOption &o : args.options) {
+		const std::string &n = o.name;
+		struct Count {
+			const char *name;
+			long lo, hi;
+			int *out;
+		};
+		const Count counts[] = {
+			{ "width", 1, 65535, &cam.width },
+			{ "height", 1, 65535, &cam.height },
+			{ "buffers", 2, 64, &cam.buffers },
+			{ "packet-size", 576, 65535, &cam.packetSize },
+			{ "socket-buffer", 65536, 1 << 30, &cam.socketBufferBytes },
+			{ "packet-timeout", 1, 10000, &cam.packetTimeoutMs },
+			{ "frame-retention", 1, 60000, &cam.frameRetentionMs },
+			{ "lost-after", 100, 600000, &cam.lostAfterMs },
+		};
+		bool counted = false;
+		for (const Count &c : counts) {
+			long v = 0;
+			if (n != c.name)
+				continue;
+			counted = true;
+			if (apps::wholeIn(o, c.lo, c.hi, v, error))
+				*c.out = static_cast<int>(v);
+		}
+		if (counted) {
+			// a number, parsed above
+		} else if (n == "camera") {
+			cam.camera = o.value;
+		} else if (n == "pixel-format") {
+			cam.pixelFormat = o.value;
+		} else if (n == "packet-socket") {
 			cam.packetSocket = true;
-		else if (n == "--no-packet-resend")
+		} else if (n == "no-packet-resend") {
 			cam.packetResend = false;
-		else if (n == "--reconnect")
+		} else if (n == "reconnect") {
 			cam.reconnect = true;
-		else if (n == "--fps") {
-			ok = live::parseNumber(arg.value, cam.frameRate) && cam.frameRate > 0 &&
-			     cam.frameRate <= 10000;
-			if (!ok)
-				error = "--fps must be a number > 0, got '" + arg.value + "'";
-		} else
-			return cliFail(kProgram, kExitUsage, "unknown option '" + n + "' (try --help)");
-		if (!ok)
-			return cliFail(kProgram, kExitUsage, error);
-	}
-	if (options.help) {
-		printUsage();
-		return 0;
+		} else if (n == "fps") {
+			apps::numberIn(o, 0, true, 10000, cam.frameRate, error);
+		}
+		if (!error.empty())
+			return apps::usageError(kProgram, error);
 	}
 	if (!live::checkLiveOptions(options, error))
-		return cliFail(kProgram, kExitUsage, error);
+		return apps::usageError(kProgram, error);
 
 	std::unique_ptr<ports::AravisSource> source;
 	const Status st = ports::AravisSource::open(cam, source);
 	if (!st.ok())
-		return cliFail(kProgram, kExitRuntime, st.message());
+		return apps::cliFail(kProgram.name, apps::kExitRuntime, st.message());
 	AravisReporter reporter(*source);
-	return live::runLive(*source, options, kProgram, &reporter);
+	return live::runLive(*source, options, kProgram.name, &reporter);
 }
 
 } // namespace
 
 int main(int argc, char **argv)
 {
-	const int code = calped::runGuarded(kProgram, [&] { return run(argc, argv); });
+	const int code = calped::apps::runGuarded(kProgram.name, [&] { return run(argc, argv); });
 	arv_shutdown(); // frees Aravis's global state (interfaces, device lists)
 	return code;
 }

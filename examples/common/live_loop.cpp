@@ -13,12 +13,15 @@
 #include <calped/calped.h>
 
 #include "cli_error.h"
-#include "file_io.h"
-#include "json_line.h"
+#include "detector_options.h"
+#include "json_frame.h"
 #include "overlay_writer.h"
 
 namespace calped {
 namespace live {
+
+using apps::cliFail;
+using apps::kExitRuntime;
 
 namespace {
 
@@ -44,64 +47,15 @@ void installStopHandlers()
 // Model, calibration and detector, set up before (or, when the source cannot tell its
 // frame size, at) the first frame.
 struct DetectorSetup {
-	Model model;
-	CameraModel camera;
-	bool hasCamera = false;
+	apps::DetectorInputs inputs;
 	std::unique_ptr<Detector> detector;
+
+	bool create(const LiveOptions &options, int width, int height, std::string &error)
+	{
+		return apps::createDetector(inputs.model, options.detector, width, height,
+					    inputs.hasCamera ? &inputs.camera : nullptr, detector, error);
+	}
 };
-
-bool loadInputs(const LiveOptions &options, DetectorSetup &setup, std::string &error)
-{
-	std::vector<uint8_t> blob;
-	if (!detect_tool::readFile(options.model, blob, error, "model "))
-		return false;
-	Status st = loadModel(blob.data(), blob.size(), setup.model);
-	if (!st.ok()) {
-		error = "model " + options.model + ": " + st.message();
-		return false;
-	}
-	if (!options.calibPath.empty()) {
-		std::vector<uint8_t> text;
-		if (!detect_tool::readFile(options.calibPath, text, error, "calibration "))
-			return false;
-		st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
-				     options.calibPath.c_str(), setup.camera);
-		if (!st.ok()) {
-			error = std::string("calibration: ") + st.message();
-			return false;
-		}
-		setup.hasCamera = true;
-	}
-	return true;
-}
-
-bool createDetector(const LiveOptions &options, int width, int height, DetectorSetup &setup,
-		    std::string &error)
-{
-	DetectorConfig config;
-	config.maxWidth = width;
-	config.maxHeight = height;
-	config.resize = options.resize;
-	config.resizeAt = options.resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
-	if (options.rejectStatic)
-		config.staticRejection = StaticRejection();
-	config.camera = setup.hasCamera ? &setup.camera : nullptr;
-	config.method = options.calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;
-	if (options.calibrated) {
-		CalibratedSettings cal;
-		cal.levels = options.calibratedPyramid ? PyramidLevels::Placed : PyramidLevels::Toolbox;
-		cal.minPersonHeight = options.minHeight;
-		cal.maxPersonHeight = options.maxHeight;
-		config.calibrated = cal;
-	}
-	const Status st = Detector::create(setup.model, config, setup.detector);
-	if (!st.ok()) {
-		error = "cannot set up the detector for " + std::to_string(width) + "x" +
-			std::to_string(height) + " frames: " + st.message();
-		return false;
-	}
-	return true;
-}
 
 class StatsLine
 {
@@ -156,10 +110,10 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 {
 	std::string error;
 	DetectorSetup setup;
-	if (!loadInputs(options, setup, error))
+	if (!apps::loadDetectorInputs(options.detector, setup.inputs, error))
 		return cliFail(program, kExitRuntime, error);
 	int width = 0, height = 0;
-	if (source.frameSize(width, height) && !createDetector(options, width, height, setup, error))
+	if (source.frameSize(width, height) && !setup.create(options, width, height, error))
 		return cliFail(program, kExitRuntime, error);
 	OverlayWriter overlay;
 	if (!options.overlayDir.empty() && !overlay.open(options.overlayDir, error))
@@ -175,13 +129,16 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 	StatsLine statsLine(program);
 	uint64_t processed = 0;
 	bool overlayWarned = false;
+	std::vector<Detection> kept; // --min-score: grows to the most detections once
+	apps::JsonFrame record;
+	record.method = options.detector.methodName();
 	int exitCode = 0;
 	while (!stopRequested()) {
 		if (!options.quiet && statsLine.due(options.statsEvery))
 			statsLine.print(source.stats(), processed, extra);
 
 		ports::Frame frame;
-		st = source.next(frame, options.timeoutMs);
+		st = source.next(frame, static_cast<int>(options.timeoutMs));
 		if (st.code() == ErrorCode::Timeout)
 			continue; // counted by the source; a stop signal is seen on the next turn
 		if (st.code() == ErrorCode::EndOfStream)
@@ -190,8 +147,7 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 			exitCode = cliFail(program, kExitRuntime, std::string(source.name()) + ": " + st.message());
 			break;
 		}
-		if (!setup.detector &&
-		    !createDetector(options, frame.image.width, frame.image.height, setup, error)) {
+		if (!setup.detector && !setup.create(options, frame.image.width, frame.image.height, error)) {
 			exitCode = cliFail(program, kExitRuntime, error);
 			break;
 		}
@@ -205,8 +161,15 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 					   "frame " + std::to_string(frame.id) + ": " + st.message());
 			break;
 		}
-		writeJsonLine(stdout, frame, st.ok() ? setup.detector->lastStats().msTotal : 0.0, dets);
-		if (!options.overlayDir.empty() && processed % options.overlayEvery == 0 &&
+		dets = apps::filterByScore(dets, options.detector.minScore, kept);
+		record.frame = static_cast<long long>(frame.id);
+		record.timestampNs = frame.timestampNs;
+		record.width = frame.image.width;
+		record.height = frame.image.height;
+		record.ms = st.ok() ? setup.detector->lastStats().msTotal : 0.0;
+		apps::writeJsonFrame(stdout, record, dets);
+		std::fflush(stdout); // live output: a reader sees each frame as it is processed
+		if (!options.overlayDir.empty() && processed % static_cast<uint64_t>(options.overlayEvery) == 0 &&
 		    !overlay.write(frame, dets, error)) {
 			if (error.compare(0, 8, "overlays") != 0) {
 				exitCode = cliFail(program, kExitRuntime, error);

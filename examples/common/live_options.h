@@ -1,65 +1,47 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Command-line options shared by the live examples (calped-aravis, calped-play,
-// calped-libcamera): detector setup, outputs and when to stop. Each example adds its
-// source's own options through the same splitter.
+// calped-libcamera): the detector flags (tools/common/detector_options.h), outputs and when
+// to stop. Each example puts its source's own options in the same table.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "args.h"
+#include "detector_options.h"
+#include "program.h"
+
 namespace calped {
 namespace live {
 
 struct LiveOptions {
-	std::string model;         // --model BLOB (required)
-	std::string calibPath;     // --calib FILE
-	bool calibrated = false;   // --method calibrated
-	double resize = 1.0;       // --resize R
-	bool resizeInPyramid = false; // --resize-in-pyramid
-	bool calibratedPyramid = false; // --calibrated-pyramid
-	bool rejectStatic = false;    // --reject-static
-	double minHeight = 1.4;    // --min-height H, metres
-	double maxHeight = 2.2;    // --max-height H, metres
+	apps::DetectorOptions detector; // --model, --calib, --method, --resize, ...
 	std::string overlayDir;    // --overlay DIR
-	int overlayEvery = 1;      // --overlay-every K
+	long overlayEvery = 1;     // --overlay-every K
 	long frames = 0;           // --frames N: stop after N processed frames (0: until stopped)
 	double statsEvery = 5.0;   // --stats-every S: seconds between stats lines on stderr
-	int timeoutMs = 2000;      // --timeout MS: wait per frame before counting a timeout
+	long timeoutMs = 2000;     // --timeout MS: wait per frame before counting a timeout
 	bool quiet = false;        // --quiet: no stats lines
-	bool help = false;
 };
 
-// One command-line option: "--name VALUE", "--name=VALUE" or a flag "--name".
-struct Arg {
-	std::string name;
-	std::string value;
-	bool hasValue = false;
-};
+// The common options' table entries (with a heading), for the example's table.
+std::vector<apps::OptionSpec> liveOptionTable();
 
-// Splits argv into options. `flags` lists the example's options without a value,
-// `valued` those with one (the common options are added to both); anything else is an
-// unknown option, and positional arguments are refused.
-bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
-	       const std::vector<std::string> &valued, std::vector<Arg> &out, std::string &error);
-// The first form (kept for examples written against it): every option not in `flags`
-// takes a value, and the caller reports unknown names.
-bool splitArgs(int argc, const char *const *argv, const std::vector<std::string> &flags,
-	       std::vector<Arg> &out, std::string &error);
-
-enum class ParseResult { NotMine, Ok, Error };
-
-// Consumes one of the common options; NotMine lets the example try its own.
-ParseResult parseLiveOption(const Arg &arg, LiveOptions &out, std::string &error);
+// Consumes one of the common options and returns true (`error` set for a bad value);
+// false lets the example take it.
+bool takeLiveOption(const apps::ParsedOption &option, LiveOptions &out, std::string &error);
 
 // Cross-option checks after every option was parsed (e.g. --model given).
-bool checkLiveOptions(const LiveOptions &options, std::string &error);
+bool checkLiveOptions(LiveOptions &options, std::string &error);
 
-// The common options' part of --help.
-const char *liveUsageText();
+// The example's command line: its own options (`own`, first in --help) and the common
+// ones, which fill `options`; the example's own are left in `rest.options`. -1 to go on,
+// else the exit status (apps::parseCommandLine).
+int parseLiveCommandLine(const apps::ProgramInfo &program, const std::vector<apps::OptionSpec> &own,
+			 int argc, const char *const *argv, LiveOptions &options, apps::ParsedArgs &rest);
 
-// Number parsing for the examples' own options: the whole text must be the number.
-bool parseNumber(const std::string &text, double &out);
-bool parseWhole(const std::string &text, long &out);
+// The end of --help: output and exit status.
+const char *liveEpilogue();
 
 } // namespace live
 } // namespace calped

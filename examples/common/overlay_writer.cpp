@@ -6,6 +6,7 @@
 
 #include "file_io.h"
 #include "overlay.h"
+#include "writers.h"
 
 namespace calped {
 namespace live {
@@ -13,7 +14,7 @@ namespace live {
 bool OverlayWriter::open(const std::string &dir, std::string &error)
 {
 	dir_ = dir;
-	return detect_tool::makeDirectories(dir, error);
+	return apps::makeDirectories(dir, error);
 }
 
 bool OverlayWriter::write(const ports::Frame &frame, const Detections &detections,
@@ -47,10 +48,9 @@ bool OverlayWriter::write(const ports::Frame &frame, const Detections &detection
 	}
 	static const uint8_t kGreen[3] = { 0, 255, 0 };
 	for (const Detection &d : detections)
-		detect_tool::drawRectangle(canvas_, d.x, d.y, d.w, d.h, 2, kGreen);
-	char name[40];
-	std::snprintf(name, sizeof(name), "/%08" PRIu64 ".png", frame.id);
-	return detect_tool::writePng(dir_ + name, canvas_, error);
+		apps::drawRectangle(canvas_, d.x, d.y, d.w, d.h, 2, kGreen);
+	return ports::writePng(dir_ + "/" + apps::overlayFileName(static_cast<long long>(frame.id)),
+			       canvas_, error);
 }
 
 } // namespace live

@@ -28,7 +28,7 @@ Status FileSource::open(const FileSourceOptions &options, std::unique_ptr<FileSo
 	} else {
 		st = listImageFiles(options.path, src->files_);
 		if (st.ok())
-			st = probeImageFiles(src->files_, src->maxWidth_, src->maxHeight_);
+			st = probeImageFiles(src->decoder_, src->files_, src->maxWidth_, src->maxHeight_);
 		src->name_ = "file:" + options.path + " (" + std::to_string(src->files_.size()) +
 			     (src->files_.size() == 1 ? " image)" : " images)");
 	}
@@ -94,7 +94,7 @@ Status FileSource::readFrame(int &width, int &height)
 				return Status::error(ErrorCode::IoError, "%s has no video frames",
 						     options_.path.c_str());
 		} else if (nextFile_ < files_.size()) {
-			return decodeImageInto(files_[nextFile_++], pixels_.data(), pixels_.size(), width,
+			return decodeImageInto(decoder_, files_[nextFile_++], pixels_.data(), pixels_.size(), width,
 					       height);
 		}
 		if (!options_.loop)

@@ -53,6 +53,7 @@ private:
 	bool video_ = false;
 	std::vector<std::string> files_;
 	VideoPipe pipe_;
+	ImageDecoder decoder_; // its file buffer is reused frame to frame
 	int maxWidth_ = 0, maxHeight_ = 0;
 	std::vector<uint8_t> pixels_; // the one frame buffer, allocated by start()
 

@@ -3,26 +3,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <system_error>
 
-#include <stb_image.h>
 
 namespace calped {
 namespace ports {
-
-namespace {
-
-const char *stbReason()
-{
-	const char *r = stbi_failure_reason();
-	return r ? r : "unknown format";
-}
-
-} // namespace
 
 bool isImageFileName(const std::string &path)
 {
@@ -62,51 +48,27 @@ Status listImageFiles(const std::string &path, std::vector<std::string> &files)
 	return Status::success();
 }
 
-Status probeImageFiles(const std::vector<std::string> &files, int &maxWidth, int &maxHeight)
+Status probeImageFiles(ImageDecoder &decoder, const std::vector<std::string> &files,
+		       int &maxWidth, int &maxHeight)
 {
 	maxWidth = maxHeight = 0;
+	std::string error;
 	for (const std::string &file : files) {
-		FILE *f = std::fopen(file.c_str(), "rb");
-		if (!f)
-			return Status::error(ErrorCode::IoError, "cannot read %s: %s", file.c_str(),
-					     std::strerror(errno));
-		int w = 0, h = 0, comp = 0;
-		const bool ok = stbi_info_from_file(f, &w, &h, &comp) != 0;
-		std::fclose(f);
-		if (!ok || w <= 0 || h <= 0)
-			return Status::error(ErrorCode::IoError, "cannot decode %s: %s", file.c_str(),
-					     ok ? "empty image" : stbReason());
+		int w = 0, h = 0;
+		if (!decoder.probe(file, w, h, error))
+			return Status::error(ErrorCode::IoError, "%s", error.c_str());
 		maxWidth = std::max(maxWidth, w);
 		maxHeight = std::max(maxHeight, h);
 	}
 	return Status::success();
 }
 
-Status decodeImageInto(const std::string &path, uint8_t *pixels, size_t capacity, int &width,
-		       int &height)
+Status decodeImageInto(ImageDecoder &decoder, const std::string &path, uint8_t *pixels,
+		       size_t capacity, int &width, int &height)
 {
-	FILE *f = std::fopen(path.c_str(), "rb");
-	if (!f)
-		return Status::error(ErrorCode::IoError, "cannot read %s: %s", path.c_str(),
-				     std::strerror(errno));
-	int w = 0, h = 0, comp = 0;
-	// Three channels requested: stb expands grey and drops alpha.
-	stbi_uc *data = stbi_load_from_file(f, &w, &h, &comp, 3);
-	std::fclose(f);
-	if (!data)
-		return Status::error(ErrorCode::IoError, "cannot decode %s: %s", path.c_str(),
-				     stbReason());
-	const size_t bytes = static_cast<size_t>(w) * h * 3;
-	if (bytes > capacity) {
-		stbi_image_free(data);
-		// The file changed since it was probed.
-		return Status::error(ErrorCode::IoError, "%s grew to %dx%d since it was opened",
-				     path.c_str(), w, h);
-	}
-	std::memcpy(pixels, data, bytes);
-	stbi_image_free(data);
-	width = w;
-	height = h;
+	std::string error;
+	if (!decoder.decodeInto(path, pixels, capacity, width, height, error))
+		return Status::error(ErrorCode::IoError, "%s", error.c_str());
 	return Status::success();
 }
 

@@ -9,6 +9,8 @@
 
 #include <calped/status.h>
 
+#include "image_io.h"
+
 namespace calped {
 namespace ports {
 
@@ -20,13 +22,15 @@ bool isImageFileName(const std::string &path);
 Status listImageFiles(const std::string &path, std::vector<std::string> &files);
 
 // Reads every file's header: undecodable files fail before streaming starts, and the
-// largest size sizes the buffer. IoError naming the file.
-Status probeImageFiles(const std::vector<std::string> &files, int &maxWidth, int &maxHeight);
+// largest size sizes the buffer. IoError naming the file. `decoder` keeps a file buffer as
+// large as the largest file, so decoding them later needs no new one.
+Status probeImageFiles(ImageDecoder &decoder, const std::vector<std::string> &files,
+		       int &maxWidth, int &maxHeight);
 
-// Decodes one file to tightly packed RGB8 into `pixels` (capacity `capacity` bytes).
-// stb_image decodes into its own malloc'd buffer, which is copied and freed here.
-Status decodeImageInto(const std::string &path, uint8_t *pixels, size_t capacity, int &width,
-		       int &height);
+// Decodes one file to tightly packed RGB8 into `pixels` (capacity `capacity` bytes) with
+// `decoder` (image_io.h: the guarded decoder, whose file buffer is reused frame to frame).
+Status decodeImageInto(ImageDecoder &decoder, const std::string &path, uint8_t *pixels,
+		       size_t capacity, int &width, int &height);
 
 } // namespace ports
 } // namespace calped

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// DetectorConfig::calibratedPyramid: computed levels placed among the needed ones. Every
+// PyramidLevels::Placed: computed levels placed among the needed ones. Every
 // needed level must be served from a computed level within the reach asked for, and from
 // the toolbox's reach up the placement must never compute more pixels than the toolbox's
 // octaves for the same bands.

@@ -134,7 +134,7 @@ TEST(PyramidBands, RowsEqualTheFullPyramidUpscaled)
 
 TEST(PyramidBands, RowsEqualTheFullPyramidWithPlacedLevels)
 {
-	// DetectorConfig::calibratedPyramid: computed levels among the needed ones, at scales
+	// PyramidLevels::Placed: computed levels among the needed ones, at scales
 	// that are no octave of the image, some approximated by upsampling.
 	const int width = 2 * 160 + 1, height = 2 * 124 - 1;
 	for (uint32_t seed = 1; seed <= 6; seed++) {

@@ -77,6 +77,27 @@ TEST(DetectionsCsv, MalformedFilesNameFileAndLine)
 	EXPECT_EQ(error.rfind(row + ":3: expected 6 comma-separated fields", 0), 0u) << error;
 }
 
+// calped-detect's CSV (three world columns, empty without a calibration) scores as it is.
+TEST(DetectionsCsv, ReadsCalpedDetectsCsv)
+{
+	const std::string path = tempPath("detect.csv");
+	FILE *f = std::fopen(path.c_str(), "w");
+	ASSERT_NE(f, nullptr);
+	std::fputs("frame,x,y,w,h,score,ground_x,ground_y,world_height\n"
+		   "1,499.93,156.25,30.27,73.84,102.5539,-3.971,-7.324,1.782\n"
+		   "2,10.00,20.00,41.00,100.00,55.1234,,,\n",
+		   f);
+	std::fclose(f);
+	SequenceDetections d;
+	std::string error;
+	ASSERT_TRUE(readDetectionsCsv(path, 2, d, error)) << error;
+	std::remove(path.c_str());
+	ASSERT_EQ(d.size(), 2u);
+	ASSERT_EQ(d[0].size(), 1u);
+	EXPECT_EQ(d[0][0].box.x, 499.93);
+	EXPECT_EQ(d[1][0].score, 55.1234);
+}
+
 TEST(RunBytes, EncodeDecodeRoundTrip)
 {
 	RunResult run;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // calped-eval as a black box: usage and input errors without data, then one run over the
 // first 5 PETS frames (skipped without ../shared and data/pets/frames).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -156,7 +157,8 @@ TEST_F(EvalCli, FivePetsFrames)
 			     quote(model) + " --calib " + quote(calib) +
 			     " --methods generic,calibrated --resizes 1.0,2.0 --jobs 2" +
 			     " --json " + quote(json.string()) + " --dets " + quote((dir_ / "dets").string()) +
-			     " --overlays " + quote((dir_ / "ov").string()) + " --overlay-frames 1,5,9");
+			     " --overlays " + quote((dir_ / "ov").string()) + " --overlay-frames 1,5,9" +
+			     " --frames-jsonl " + quote((dir_ / "jsonl").string()));
 	ASSERT_EQ(r.exitCode, 0) << r.err;
 	// The thesis's Table 4.1 pyramid and CApF for PETS at resize 2 (Dollár's scale rules).
 	EXPECT_NE(r.out.find("| generic | 2.0 | 29 (4) | 570135 |"), std::string::npos) << r.out;
@@ -184,9 +186,15 @@ TEST_F(EvalCli, FivePetsFrames)
 	EXPECT_LT(jsonValue(text, 3, "capf"), jsonValue(text, 2, "capf") / 4);
 
 	EXPECT_TRUE(fs::exists(dir_ / "dets" / "generic_r1.0.csv"));
-	EXPECT_TRUE(fs::exists(dir_ / "ov" / "generic_r2.0_000001.png"));
-	EXPECT_TRUE(fs::exists(dir_ / "ov" / "generic_r2.0_000005.png"));
-	EXPECT_FALSE(fs::exists(dir_ / "ov" / "generic_r2.0_000009.png")); // beyond the 5 frames
+	// Overlays are named as every program names them, in a folder per run.
+	EXPECT_TRUE(fs::exists(dir_ / "ov" / "generic_r2.0" / "000001.png"));
+	EXPECT_TRUE(fs::exists(dir_ / "ov" / "generic_r2.0" / "000005.png"));
+	EXPECT_FALSE(fs::exists(dir_ / "ov" / "generic_r2.0" / "000009.png")); // beyond the 5 frames
+	// The JSON frame records of calped-detect, one per frame, saying which method ran.
+	const std::string records = slurp((dir_ / "jsonl" / "calibrated_r2.0.jsonl").string());
+	EXPECT_EQ(std::count(records.begin(), records.end(), '\n'), 5) << records;
+	EXPECT_EQ(records.rfind("{\"frame\":1,\"method\":\"calibrated\",\"file\":", 0), 0u) << records;
+	EXPECT_NE(records.find("\"world_height\":"), std::string::npos) << records;
 
 	// Scoring the written detections reproduces the run's accuracy exactly.
 	const fs::path scored = dir_ / "scored.json";

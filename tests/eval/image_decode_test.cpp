@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // The tools' image decoding: the fuzz seeds decode to what they hold, and every input the
 // image fuzz target found is refused with a reason before stb_image 2.27 mishandles it
-// (tests/fuzz/regressions/image; tools/detect/stb_guard.h lists the faults).
+// (tests/fuzz/regressions/image; ports/file/stb_guard.h lists the faults).
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -11,7 +11,7 @@
 #include "image_io.h"
 #include "test_paths.h"
 
-namespace calped::detect_tool {
+namespace calped::ports {
 namespace {
 
 std::string fuzzFile(const std::string &relative)
@@ -174,4 +174,4 @@ TEST(ImageDecode, RefusesFormatsAndSizesOutsideTheDocumentedOnes)
 }
 
 } // namespace
-} // namespace calped::detect_tool
+} // namespace calped::ports

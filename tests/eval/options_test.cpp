@@ -56,6 +56,37 @@ TEST(EvalOptions, UsageErrors)
 		<< error;
 }
 
+TEST(EvalOptions, DetectorFlagsAndTheirDefaults)
+{
+	EvalOptions o;
+	std::string error;
+	ASSERT_TRUE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--calib=c.xml" }, o, error)) << error;
+	EXPECT_EQ(o.calib, "c.xml");
+	EXPECT_EQ(o.detector.calibPath, "c.xml");
+	EXPECT_EQ(o.detector.resizeAt, apps::ResizeChoice::Default);
+	EXPECT_EQ(o.detector.levels, apps::LevelsChoice::Default);
+	ASSERT_TRUE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--resize-at", "frame",
+			    "--levels=toolbox", "--resizes", "0.5,2" },
+			  o, error))
+		<< error;
+	EXPECT_EQ(o.detector.resizeAt, apps::ResizeChoice::Frame);
+	EXPECT_EQ(o.detector.levels, apps::LevelsChoice::Toolbox);
+	// The pyramid only upscales; placed levels need the frame at its own size.
+	EXPECT_FALSE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--resize-at", "pyramid",
+			     "--resizes", "0.5" },
+			   o, error));
+	EXPECT_NE(error.find("--resize-at pyramid"), std::string::npos) << error;
+	EXPECT_FALSE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--resize-at", "frame",
+			     "--levels", "placed", "--resizes", "2" },
+			   o, error));
+	EXPECT_NE(error.find("--levels placed"), std::string::npos) << error;
+	// Unknown options are named as written (not "needs a value").
+	EXPECT_FALSE(parse({ "--frames", "f", "--gt", "g", "--model", "m", "--bogus" }, o, error));
+	EXPECT_EQ(error, "unknown option '--bogus' (try --help)");
+	ASSERT_TRUE(parse({ "--version" }, o, error)) << error;
+	EXPECT_TRUE(o.version);
+}
+
 TEST(Methods, RegistryKnowsBothModes)
 {
 	ASSERT_NE(findMethod("generic"), nullptr);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// The tools' image decoding (stb_image through tools/detect/image_io) on arbitrary bytes.
+// The tools' image decoding (stb_image through ports/file/image_io) on arbitrary bytes.
 // The pixel cap is lower than the tools' so one input cannot spend seconds decoding a
 // huge frame; the code path is the same.
 #include <cstddef>
@@ -12,7 +12,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-	using namespace calped::detect_tool;
+	using namespace calped::ports;
 	RgbImage image;
 	std::string error;
 	const bool ok = decodeImageBytes(data, size, "fuzz.img", image, error, 1L << 20);

@@ -315,13 +315,18 @@ TEST_F(ConvertTest, TruncatedMatFileFailsCleanly)
 	}
 }
 
-TEST_F(ConvertTest, BadUsagePrintsUsageAndExitsWithTwo)
+TEST_F(ConvertTest, BadUsageIsOneLineAndExitsWithTwo)
 {
 	EXPECT_EQ(run({}).exitCode, 2);
-	EXPECT_EQ(run({ "only-one.mat" }).exitCode, 2);
-	const RunResult r = run({ "--bogus", "a.mat", "b.cpm" });
+	RunResult r = run({ "only-one.mat" });
 	EXPECT_EQ(r.exitCode, 2);
-	EXPECT_NE(r.err.find("usage: calped-convert"), std::string::npos) << r.err;
+	EXPECT_EQ(r.err, "calped-convert: expected two arguments, IN.mat and OUT.cpm, got 1 (try --help)\n");
+	r = run({ "--bogus", "a.mat", "b.cpm" });
+	EXPECT_EQ(r.exitCode, 2);
+	EXPECT_EQ(r.err, "calped-convert: unknown option '--bogus' (try --help)\n");
+	r = run({ "--help" });
+	EXPECT_EQ(r.exitCode, 0);
+	EXPECT_NE(r.out.find("usage: calped-convert"), std::string::npos) << r.out;
 }
 
 } // namespace

@@ -64,7 +64,9 @@ void expectJsonLines(const std::vector<std::string> &lines)
 {
 	for (const std::string &l : lines) {
 		EXPECT_EQ(l.rfind("{\"frame\":", 0), 0u) << l;
-		EXPECT_NE(l.find("\"timestamp_ns\":"), std::string::npos) << l;
+		// calped-detect's record: which method ran, then the live source's timestamp.
+		EXPECT_NE(l.find(",\"method\":\"generic\",\"timestamp_ns\":"), std::string::npos) << l;
+		EXPECT_NE(l.find(",\"width\":"), std::string::npos) << l;
 		EXPECT_NE(l.find("\"detections\":["), std::string::npos) << l;
 		EXPECT_EQ(l.substr(l.size() - 2), "]}") << l;
 	}
@@ -97,6 +99,21 @@ TEST_F(LiveExample, PlayEndsWithTheSequence)
 	EXPECT_EQ(r.exitCode, 0) << r.err;
 	EXPECT_EQ(splitLines(r.out).size(), 4u);
 	EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
+// Overlays are named as calped-detect names them: DIR/NNNNNN.png by frame number.
+TEST_F(LiveExample, PlayOverlaysAreNamedLikeCalpedDetects)
+{
+	if (model_.empty())
+		GTEST_SKIP() << "the INRIA model is not available (../shared): skipping";
+	const ProcessResult r = runProcess(gPlay, { "--input=" + dir_ + "/frames", "--model=" + model_,
+						    "--overlay=" + dir_ + "/ov", "--overlay-every=2", "--quiet" },
+					   dir_);
+	ASSERT_TRUE(r.exited);
+	EXPECT_EQ(r.exitCode, 0) << r.err;
+	EXPECT_TRUE(fs::exists(dir_ + "/ov/000001.png"));
+	EXPECT_FALSE(fs::exists(dir_ + "/ov/000002.png"));
+	EXPECT_TRUE(fs::exists(dir_ + "/ov/000003.png"));
 }
 
 TEST_F(LiveExample, UsageAndRuntimeErrors)

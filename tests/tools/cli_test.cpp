@@ -2,7 +2,9 @@
 // calped-detect as a black box: exit codes, one-line errors, and the shape of its outputs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -200,7 +202,7 @@ TEST_F(CliTest, ResizeBoundsAreAccepted)
 
 TEST_F(CliTest, FlagsTakeNoValue)
 {
-	for (const char *flag : { "--resize-in-pyramid=1", "--reject-static=yes", "--no-nms=0" }) {
+	for (const char *flag : { "--quiet=1", "--reject-static=yes", "--no-nms=0" }) {
 		ProcessResult r = detect({ "--model", "m", flag, someImage() });
 		expectOneLineError(r, 2);
 		EXPECT_NE(r.err.find("takes no value"), std::string::npos) << flag << ": " << r.err;
@@ -318,6 +320,20 @@ const std::string &convertedModel(std::string &skipReason)
 class CliRunTest : public CliTest
 {
 protected:
+	// PETS 2009 frame 1 and its calibration, "" when absent (scripts/fetch-pets.sh, ../shared).
+	static std::string petsFrame()
+	{
+		const char *source = std::getenv("CALPED_SOURCE_DIR");
+		const std::string frame = std::string(source ? source : ".") + "/data/pets/frames/000001.png";
+		return fs::exists(frame) ? frame : "";
+	}
+	static std::string petsCalib()
+	{
+		const char *shared = std::getenv("CALPED_SHARED_DIR");
+		const std::string calib = std::string(shared ? shared : "../shared") + "/data/pets2009-s2l1/View_001.xml";
+		return fs::exists(calib) ? calib : "";
+	}
+
 	void SetUp() override
 	{
 		CliTest::SetUp();
@@ -359,10 +375,12 @@ TEST_F(CliRunTest, CsvAndJsonlHaveTheDocumentedShape)
 
 	std::vector<std::string> csv = splitLines(readTextFile(path("d.csv")));
 	ASSERT_GE(csv.size(), 1u);
-	EXPECT_EQ(csv[0], "frame,x,y,w,h,score");
+	EXPECT_EQ(csv[0], "frame,x,y,w,h,score,ground_x,ground_y,world_height");
 	for (size_t i = 1; i < csv.size(); i++) {
 		std::vector<std::string> f = splitCommas(csv[i]);
-		ASSERT_EQ(f.size(), 6u) << "row " << i << ": " << csv[i];
+		ASSERT_EQ(f.size(), 9u) << "row " << i << ": " << csv[i];
+		// No calibration: the world fields are empty.
+		EXPECT_TRUE(f[6].empty() && f[7].empty() && f[8].empty()) << csv[i];
 		EXPECT_TRUE(f[0] == "1" || f[0] == "2" || f[0] == "3") << csv[i];
 		for (int c = 1; c <= 4; c++)
 			EXPECT_TRUE(isFixedDecimal(f[c], 2)) << "column " << c << ": " << csv[i];
@@ -377,7 +395,7 @@ TEST_F(CliRunTest, CsvAndJsonlHaveTheDocumentedShape)
 	size_t jsonDetections = 0;
 	for (int k = 0; k < 3; k++) {
 		const std::string &line = jsonl[k];
-		std::string prefix = "{\"frame\":" + std::to_string(k + 1) + ",\"file\":\"";
+		std::string prefix = "{\"frame\":" + std::to_string(k + 1) + ",\"method\":\"generic\",\"file\":\"";
 		EXPECT_EQ(line.rfind(prefix, 0), 0u) << line;
 		EXPECT_NE(line.find(std::string(files[k]) + "\""), std::string::npos) << line;
 		size_t ms = line.find(",\"ms\":");
@@ -404,33 +422,198 @@ TEST_F(CliRunTest, JsonlToStdoutAndMaxFrames)
 	EXPECT_EQ(lines[1].rfind("{\"frame\":2,", 0), 0u) << lines[1];
 	// Not quiet: the summary line on stderr counts the frames.
 	EXPECT_NE(r.err.find("summary: frames=2 "), std::string::npos) << r.err;
+	EXPECT_NE(r.err.find(" method=generic\n"), std::string::npos) << r.err;
 }
 
-TEST_F(CliRunTest, ResizeInsideThePyramid)
+TEST_F(CliRunTest, ResizeInsideThePyramidIsTheDefault)
 {
-	// Upscaling inside the pyramid runs; downscaling there is refused by name.
-	ProcessResult r = detect({ "--model", model_, "--resize", "2", "--resize-in-pyramid", "--jsonl", "-",
-				   "--quiet", path("frames") });
+	// Upscaling runs inside the pyramid by default, or on the frame with --resize-at frame;
+	// below 1 the frame is resized (the pyramid only upscales), and asking for the pyramid
+	// there is refused by name.
+	for (const std::vector<std::string> &extra :
+	     { std::vector<std::string>{}, std::vector<std::string>{ "--resize-at=frame" },
+	       std::vector<std::string>{ "--reject-static" } }) {
+		std::vector<std::string> args = { "--model", model_, "--resize", "2", "--jsonl", "-",
+						  "--quiet", path("frames") };
+		args.insert(args.end(), extra.begin(), extra.end());
+		ProcessResult r = detect(args);
+		ASSERT_TRUE(r.exited) << r.err;
+		ASSERT_EQ(r.exitCode, 0) << r.err;
+		EXPECT_EQ(splitLines(r.out).size(), 3u) << r.out;
+	}
+	ProcessResult r = detect({ "--model", model_, "--resize", "0.5", "--quiet", path("frames/a.png") });
+	EXPECT_EQ(r.exitCode, 0) << r.err;
+	r = detect({ "--model", model_, "--resize", "0.5", "--resize-at", "pyramid", path("frames/a.png") });
+	expectOneLineError(r, 2);
+	EXPECT_NE(r.err.find("--resize-at pyramid"), std::string::npos) << r.err;
+	r = detect({ "--model", model_, "--resize-at", "octave", path("frames/a.png") });
+	expectOneLineError(r, 2);
+	EXPECT_NE(r.err.find("--resize-at: expected pyramid or frame, got 'octave'"), std::string::npos) << r.err;
+}
+
+TEST_F(CliRunTest, LevelsAreForTheCalibratedMethod)
+{
+	// --levels chooses the calibrated method's computed levels: with the generic method
+	// it is a usage error naming the flag, like --method calibrated without --calib.
+	for (const char *levels : { "placed", "toolbox" }) {
+		ProcessResult r = detect({ "--model", model_, "--levels", levels, path("frames/a.png") });
+		expectOneLineError(r, 2);
+		EXPECT_NE(r.err.find("--levels applies to the calibrated method only"), std::string::npos) << r.err;
+	}
+	ProcessResult r = detect({ "--model", model_, "--method=calibrated", path("frames/a.png") });
+	expectOneLineError(r, 2);
+	EXPECT_NE(r.err.find("--method calibrated needs --calib"), std::string::npos) << r.err;
+	r = detect({ "--model", model_, "--no-box-voting", path("frames/a.png") });
+	expectOneLineError(r, 2);
+	EXPECT_NE(r.err.find("--no-box-voting"), std::string::npos) << r.err;
+}
+
+TEST_F(CliRunTest, MotRowsWithoutACalibration)
+{
+	const std::string frame = petsFrame();
+	if (frame.empty())
+		GTEST_SKIP() << "needs data/pets/frames (scripts/fetch-pets.sh)";
+	ProcessResult r = detect({ "--model", model_, "--mot", path("det.txt"), "--csv", path("d.csv"),
+				   "--resize", "2", "--quiet", frame });
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	const std::vector<std::string> mot = splitLines(readTextFile(path("det.txt")));
+	const std::vector<std::string> csv = splitLines(readTextFile(path("d.csv")));
+	ASSERT_EQ(mot.size() + 1, csv.size()) << "no header in MOT files";
+	ASSERT_FALSE(mot.empty()) << "PETS frame 1 has people";
+	for (size_t i = 0; i < mot.size(); i++) {
+		const std::vector<std::string> m = splitCommas(mot[i]);
+		const std::vector<std::string> c = splitCommas(csv[i + 1]);
+		ASSERT_EQ(m.size(), 10u) << mot[i];
+		EXPECT_EQ(m[0], c[0]) << mot[i];
+		EXPECT_EQ(m[1], "-1") << mot[i];
+		for (int k = 0; k < 5; k++)
+			EXPECT_EQ(m[2 + k], c[1 + k]) << mot[i];
+		EXPECT_EQ(m[7], "-1");
+		EXPECT_EQ(m[8], "-1");
+		EXPECT_EQ(m[9], "-1");
+	}
+}
+
+TEST_F(CliRunTest, MinScoreLeavesLowScoresOut)
+{
+	const std::string frame = petsFrame();
+	if (frame.empty())
+		GTEST_SKIP() << "needs data/pets/frames (scripts/fetch-pets.sh)";
+	ProcessResult all = detect({ "--model", model_, "--csv", path("all.csv"), "--resize", "2", "--no-nms",
+				     "--quiet", frame });
+	ASSERT_EQ(all.exitCode, 0) << all.err;
+	const std::vector<std::string> rows = splitLines(readTextFile(path("all.csv")));
+	ASSERT_GT(rows.size(), 2u);
+	// The median score as threshold: only rows at or above it stay.
+	std::vector<double> scores;
+	for (size_t i = 1; i < rows.size(); i++)
+		scores.push_back(std::atof(splitCommas(rows[i])[5].c_str()));
+	std::vector<double> sorted = scores;
+	std::sort(sorted.begin(), sorted.end());
+	const double threshold = sorted[sorted.size() / 2];
+	size_t expected = 0;
+	for (double s : scores)
+		expected += s >= threshold;
+	char text[32];
+	std::snprintf(text, sizeof(text), "%.4f", threshold);
+	ProcessResult some = detect({ "--model", model_, "--csv", path("some.csv"), "--resize", "2", "--no-nms",
+				      "--min-score=" + std::string(text), "--quiet", frame });
+	ASSERT_EQ(some.exitCode, 0) << some.err;
+	EXPECT_EQ(splitLines(readTextFile(path("some.csv"))).size() - 1, expected);
+	expectOneLineError(detect({ "--model", model_, "--min-score", "high", path("frames") }), 2);
+}
+
+TEST_F(CliRunTest, JsonFileNamesAreEscapedAndValidUtf8)
+{
+	// A control character and a byte that is not UTF-8 in file names: the JSON line stays
+	// valid, the control character escaped and the bad byte replaced by U+FFFD.
+	fs::create_directory(path("odd"));
+	fs::copy_file(path("frames/a.png"), path("odd/a\x01\"q.png"));
+	fs::copy_file(path("frames/a.png"), path("odd/b\xff\xc3.png"));
+	fs::copy_file(path("frames/a.png"), path("odd/c\xc3\xa9.png")); // valid: kept as is
+	ProcessResult r = detect({ "--model", model_, "--jsonl", "-", "--quiet", path("odd") });
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	const std::vector<std::string> lines = splitLines(r.out);
+	ASSERT_EQ(lines.size(), 3u) << r.out;
+	EXPECT_NE(lines[0].find("a\\u0001\\\"q.png\""), std::string::npos) << lines[0];
+	EXPECT_NE(lines[1].find("b\xef\xbf\xbd\xef\xbf\xbd.png\""), std::string::npos) << lines[1];
+	EXPECT_NE(lines[2].find("c\xc3\xa9.png\""), std::string::npos) << lines[2];
+	for (const std::string &l : lines)
+		for (unsigned char c : l)
+			EXPECT_TRUE(c >= 0x20 && c != 0xff) << "raw byte " << int(c) << " in " << l;
+}
+
+TEST_F(CliRunTest, VideoInput)
+{
+	if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0)
+		GTEST_SKIP() << "ffmpeg is not installed: skipping the video input test";
+	// Three frames as a lossless video, then the video and an image as inputs: frames are
+	// numbered across them and each JSON record names its input.
+	fs::create_directory(path("seq"));
+	for (int k = 1; k <= 3; k++)
+		ASSERT_TRUE(stbi_write_png(path("seq/00000" + std::to_string(k) + ".png").c_str(), kW, kH, 1,
+					   grey_.data(), kW));
+	const std::string cmd = "ffmpeg -nostdin -loglevel error -y -framerate 5 -i '" + path("seq/%06d.png") +
+				"' -c:v ffv1 '" + path("v.avi") + "'";
+	ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+	ProcessResult r = detect({ "--model", model_, "--jsonl", "-", "--csv", path("v.csv"), "--quiet",
+				   path("v.avi"), path("frames/b.ppm") });
 	ASSERT_TRUE(r.exited) << r.err;
 	ASSERT_EQ(r.exitCode, 0) << r.err;
-	EXPECT_EQ(splitLines(r.out).size(), 3u) << r.out;
-	// With static rejection too: three frames are all inside its warm-up.
-	r = detect({ "--model", model_, "--resize", "2", "--resize-in-pyramid", "--reject-static",
-		     "--jsonl", "-", "--quiet", path("frames") });
+	const std::vector<std::string> lines = splitLines(r.out);
+	ASSERT_EQ(lines.size(), 4u) << r.out;
+	for (int k = 0; k < 3; k++) {
+		EXPECT_EQ(lines[k].rfind("{\"frame\":" + std::to_string(k + 1) + ",", 0), 0u) << lines[k];
+		EXPECT_NE(lines[k].find("v.avi\",\"width\":160,\"height\":240,"), std::string::npos) << lines[k];
+	}
+	EXPECT_NE(lines[3].find("b.ppm\""), std::string::npos) << lines[3];
+	// --max-frames stops inside the video.
+	r = detect({ "--model", model_, "--jsonl", "-", "--max-frames", "2", "--quiet", path("v.avi") });
 	ASSERT_EQ(r.exitCode, 0) << r.err;
-	EXPECT_EQ(splitLines(r.out).size(), 3u) << r.out;
-	r = detect({ "--model", model_, "--resize", "0.5", "--resize-in-pyramid", path("frames/a.png") });
-	expectOneLineError(r, 1);
-	EXPECT_NE(r.err.find("pyramid"), std::string::npos) << r.err;
+	EXPECT_EQ(splitLines(r.out).size(), 2u) << r.out;
 }
 
-TEST_F(CliRunTest, PlacedPyramidIsForTheCalibratedMethod)
+// With a PETS frame and its calibration (skipped without them): --calib alone runs the
+// calibrated method, the record says so, and the world fields are filled.
+TEST_F(CliRunTest, CalibAloneRunsTheCalibratedMethod)
 {
-	// --calibrated-pyramid places computed levels from a calibration's plan: without the
-	// calibrated method it is refused by name, with a one-line error.
-	ProcessResult r = detect({ "--model", model_, "--calibrated-pyramid", path("frames/a.png") });
-	expectOneLineError(r, 1);
-	EXPECT_NE(r.err.find("method is generic"), std::string::npos) << r.err;
+	const std::string calib = petsCalib(), frame = petsFrame();
+	if (calib.empty() || frame.empty())
+		GTEST_SKIP() << "needs ../shared's View_001.xml and data/pets/frames (scripts/fetch-pets.sh)";
+	ProcessResult r = detect({ "--model", model_, "--calib", calib, "--resize", "2", "--jsonl", "-",
+				   "--csv", path("c.csv"), "--mot", path("c.txt"), "--quiet", frame });
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	EXPECT_EQ(r.out.rfind("{\"frame\":1,\"method\":\"calibrated\",", 0), 0u) << r.out;
+	const std::vector<std::string> csv = splitLines(readTextFile(path("c.csv")));
+	const std::vector<std::string> mot = splitLines(readTextFile(path("c.txt")));
+	ASSERT_GT(csv.size(), 1u) << "PETS frame 1 has people";
+	ASSERT_EQ(mot.size() + 1, csv.size());
+	for (size_t i = 1; i < csv.size(); i++) {
+		const std::vector<std::string> f = splitCommas(csv[i]);
+		ASSERT_EQ(f.size(), 9u) << csv[i];
+		for (int c = 6; c <= 8; c++)
+			EXPECT_TRUE(isFixedDecimal(f[c], 3)) << "column " << c << ": " << csv[i];
+		const double height = std::atof(f[8].c_str());
+		EXPECT_TRUE(height >= 1.4 && height <= 2.2) << csv[i];
+		const std::vector<std::string> m = splitCommas(mot[i - 1]);
+		EXPECT_EQ(m[7], f[6]);
+		EXPECT_EQ(m[8], f[7]);
+		EXPECT_EQ(m[9], f[8]);
+	}
+	// --method generic with the calibration: the generic method, boxes still placed.
+	r = detect({ "--model", model_, "--calib", calib, "--method", "generic", "--resize", "2", "--jsonl", "-",
+		     "--quiet", frame });
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	EXPECT_EQ(r.out.rfind("{\"frame\":1,\"method\":\"generic\",", 0), 0u) << r.out;
+	EXPECT_NE(r.out.find("\"world_height\":"), std::string::npos) << r.out;
+	// --levels goes with it, and placed levels need the resize inside the pyramid.
+	r = detect({ "--model", model_, "--calib", calib, "--levels", "toolbox", "--resize", "1.5",
+		     "--resize-at", "frame", "--quiet", frame });
+	EXPECT_EQ(r.exitCode, 0) << r.err;
+	r = detect({ "--model", model_, "--calib", calib, "--levels", "placed", "--resize", "1.5",
+		     "--resize-at", "frame", "--quiet", frame });
+	expectOneLineError(r, 2);
+	EXPECT_NE(r.err.find("--levels placed"), std::string::npos) << r.err;
 }
 
 TEST_F(CliRunTest, OverlaysEveryKthFrameAsRgb)

@@ -10,14 +10,19 @@
 #include <calped/calibration.h>
 
 #include "correspondences.h"
-#include "file_io.h"
+#include "file_io.h" // tools/common
+#include "cli_error.h"
+#include "program.h"
 
 namespace calped::calibrate_tool {
 
+using apps::readTextFile;
+using apps::statusText;
+using apps::writeTextFile;
+
 namespace {
 
-constexpr int kExitRuntime = 1;
-constexpr int kExitUsage = 2;
+using apps::kExitRuntime;
 
 struct Options {
 	std::string input;
@@ -26,7 +31,8 @@ struct Options {
 	bool quiet = false;
 };
 
-const char kUsage[] =
+const apps::ProgramInfo kProgram = {
+	"calped-calibrate",
 	"usage: calped-calibrate [--unit mm|cm|m] [-o FILE] [--quiet] POINTS.csv\n"
 	"\n"
 	"Estimates the 3x4 projection matrix P from >= 6 image/world correspondences with the\n"
@@ -35,80 +41,45 @@ const char kUsage[] =
 	"\n"
 	"  POINTS.csv       header 'u,v,X,Y,Z', then one correspondence per line: pixel\n"
 	"                   (undistorted) and world point; world z up, ground at z = 0\n"
-	"  --unit U         unit of X, Y, Z: mm, cm or m (default m); written as 'unit: U'\n"
-	"  -o, --output F   write P to F instead of standard output\n"
-	"  --quiet          no report on standard error (errors are still printed)\n"
-	"  -h, --help       this text\n";
+	"\n"
+	"options:\n",
+	"\n"
+	"exit status: 0 success, 1 runtime error, 2 usage error\n",
+};
+
+const std::vector<apps::OptionSpec> kOptions = {
+	{ "unit", "U", "unit of X, Y, Z: mm, cm or m (default m); written as 'unit: U'" },
+	{ "output", "FILE", "write P to FILE instead of standard output", 'o' },
+	{ "quiet", nullptr, "no report on standard error (errors are still printed)" },
+};
 
 int fail(int code, const std::string &message)
 {
-	std::fprintf(stderr, "calped-calibrate: %s\n", message.c_str());
-	return code;
+	return apps::cliFail(kProgram.name, code, message);
 }
 
-// Strips the "Code: " prefix of a Status message for the tool's one-line errors.
-std::string statusText(const Status &st)
-{
-	const char *text = st.message();
-	const size_t skip = std::strlen(errorCodeName(st.code())) + 2;
-	return std::strlen(text) >= skip ? text + skip : text;
-}
-
-// 0 when parsed, else the exit code (help prints usage and returns -1 for "exit 0").
+// -1 when parsed, else the exit code.
 int parseArgs(int argc, char **argv, Options &opt)
 {
-	bool endOfOptions = false;
-	for (int i = 1; i < argc; i++) {
-		std::string arg = argv[i];
-		if (!endOfOptions && arg == "--") {
-			endOfOptions = true;
-			continue;
-		}
-		if (endOfOptions || arg.empty() || arg[0] != '-' || arg == "-") {
-			if (!opt.input.empty())
-				return fail(kExitUsage, "more than one input file (see --help)");
-			opt.input = arg;
-			continue;
-		}
-		std::string value;
-		bool hasValue = false;
-		const size_t eq = arg.find('=');
-		if (arg.compare(0, 2, "--") == 0 && eq != std::string::npos) {
-			value = arg.substr(eq + 1);
-			arg = arg.substr(0, eq);
-			hasValue = true;
-		}
-		auto takeValue = [&]() {
-			if (hasValue)
-				return true;
-			if (i + 1 >= argc)
-				return false;
-			value = argv[++i];
-			return true;
-		};
-		if (arg == "-h" || arg == "--help") {
-			std::fputs(kUsage, stdout);
-			return -1;
-		} else if (arg == "--quiet") {
+	apps::ParsedArgs args;
+	const int rc = apps::parseCommandLine(kProgram, kOptions, true, argc, argv, args);
+	if (rc >= 0)
+		return rc;
+	std::string error;
+	for (const apps::ParsedOption &o : args.options) {
+		if (o.name == "quiet")
 			opt.quiet = true;
-		} else if (arg == "--unit") {
-			if (!takeValue())
-				return fail(kExitUsage, "--unit needs a value (mm, cm or m)");
-			if (!parseLengthUnit(value.data(), value.size(), opt.unit))
-				return fail(kExitUsage, "--unit '" + value + "' is not mm, cm or m");
-		} else if (arg == "-o" || arg == "--output") {
-			if (!takeValue() || value.empty())
-				return fail(kExitUsage, arg + " needs a file name");
-			opt.output = value;
-		} else {
-			return fail(kExitUsage, "unknown option " + arg + " (see --help)");
-		}
-		if (hasValue && arg != "--unit" && arg != "--output")
-			return fail(kExitUsage, arg + " takes no value");
+		else if (o.name == "unit" && !parseLengthUnit(o.value.data(), o.value.size(), opt.unit))
+			return apps::usageError(kProgram, apps::badValue(o, "mm, cm or m"));
+		else if (o.name == "output" && !apps::nonEmpty(o, "a file name", opt.output, error))
+			return apps::usageError(kProgram, error);
 	}
-	if (opt.input.empty())
-		return fail(kExitUsage, "no correspondence file given (see --help)");
-	return 0;
+	if (args.positional.empty())
+		return apps::usageError(kProgram, "no correspondence file given (see --help)");
+	if (args.positional.size() > 1)
+		return apps::usageError(kProgram, "more than one input file (see --help)");
+	opt.input = args.positional[0];
+	return -1;
 }
 
 int run(const Options &opt)
@@ -181,7 +152,7 @@ int main(int argc, char **argv)
 	using namespace calped::calibrate_tool;
 	Options opt;
 	const int parsed = parseArgs(argc, argv, opt);
-	if (parsed != 0)
-		return parsed < 0 ? 0 : parsed;
+	if (parsed >= 0)
+		return parsed;
 	return run(opt);
 }

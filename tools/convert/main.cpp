@@ -20,6 +20,7 @@
 #include "detector_clf.h"
 #include "detector_opts.h"
 #include "mat_reader.h"
+#include "program.h"
 
 namespace calped {
 namespace convert {
@@ -27,14 +28,24 @@ namespace convert {
 namespace {
 
 constexpr int kExitFailure = 1;
-constexpr int kExitUsage = 2;
 
-const char kUsage[] =
+const apps::ProgramInfo kProgram = {
+	"calped-convert",
 	"usage: calped-convert [--dump-arrays DIR] [--name NAME] IN.mat OUT.cpm\n"
-	"  Converts a detector trained with Piotr Dollar's toolbox (ACF, Matlab v5 .mat)\n"
-	"  into a calped model blob.\n"
-	"  --dump-arrays DIR  also write the raw clf arrays to DIR/{fids,thrs,child,hs,weights,depth}.txt\n"
-	"  --name NAME        model name stored in the blob (default: IN's file name without .mat)\n";
+	"\n"
+	"Converts a detector trained with Piotr Dollar's toolbox (ACF, Matlab v5 .mat) into a\n"
+	"calped model blob (docs/model-format.md).\n"
+	"\n"
+	"options:\n",
+	"\n"
+	"exit status: 0 success, 1 conversion error, 2 usage error\n",
+};
+
+const std::vector<apps::OptionSpec> kOptions = {
+	{ "dump-arrays", "DIR", "also write the raw clf arrays to\n"
+				"DIR/{fids,thrs,child,hs,weights,depth}.txt" },
+	{ "name", "NAME", "model name stored in the blob (default: IN's file name without .mat)" },
+};
 
 struct Options {
 	std::string input, output, dumpDir, name;
@@ -44,37 +55,23 @@ struct Options {
 // Returns -1 when the arguments are fine, else the exit code.
 int parseArgs(int argc, char **argv, Options &o)
 {
-	std::vector<std::string> positional;
-	for (int i = 1; i < argc; i++) {
-		const std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help") {
-			std::fputs(kUsage, stdout);
-			return 0;
-		}
-		if (arg == "--dump-arrays" || arg == "--name") {
-			if (i + 1 >= argc) {
-				std::fprintf(stderr, "calped-convert: %s needs a value\n%s", arg.c_str(), kUsage);
-				return kExitUsage;
-			}
-			if (arg == "--name") {
-				o.name = argv[++i];
-				o.haveName = true;
-			} else {
-				o.dumpDir = argv[++i];
-			}
-		} else if (arg.size() > 1 && arg[0] == '-') {
-			std::fprintf(stderr, "calped-convert: unknown option %s\n%s", arg.c_str(), kUsage);
-			return kExitUsage;
+	apps::ParsedArgs args;
+	const int rc = apps::parseCommandLine(kProgram, kOptions, true, argc, argv, args);
+	if (rc >= 0)
+		return rc;
+	for (const apps::ParsedOption &opt : args.options) {
+		if (opt.name == "name") {
+			o.name = opt.value;
+			o.haveName = true;
 		} else {
-			positional.push_back(arg);
+			o.dumpDir = opt.value;
 		}
 	}
-	if (positional.size() != 2) {
-		std::fputs(kUsage, stderr);
-		return kExitUsage;
-	}
-	o.input = positional[0];
-	o.output = positional[1];
+	if (args.positional.size() != 2)
+		return apps::usageError(kProgram, "expected two arguments, IN.mat and OUT.cpm, got " +
+							  std::to_string(args.positional.size()) + " (try --help)");
+	o.input = args.positional[0];
+	o.output = args.positional[1];
 	if (!o.haveName) {
 		std::filesystem::path p(o.input);
 		o.name = p.extension() == ".mat" ? p.stem().string() : p.filename().string();

@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// calped-detect: runs the detector over image files or folders and writes CSV, JSON Lines
-// and overlay images. See docs/cli.md.
+// calped-detect: runs the detector over image files, folders or videos and writes CSV,
+// MOTChallenge detections, JSON Lines and overlay images. See docs/cli.md.
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
-#include <exception>
 #include <memory>
-#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,24 +12,129 @@
 #include <calped/calped.h>
 
 #include "cli_error.h"
+#include "detector_options.h"
 #include "file_io.h"
 #include "frame_list.h"
 #include "image_io.h"
-#include "options.h"
+#include "json_frame.h"
 #include "overlay.h"
+#include "program.h"
 #include "progress.h"
+#include "video_pipe.h"
 #include "writers.h"
 
-using calped::kExitRuntime;
-using calped::kExitUsage;
-
-namespace calped::detect_tool {
+namespace calped::apps {
 
 namespace {
 
+const ProgramInfo kProgram = {
+	"calped-detect",
+	"usage: calped-detect --model BLOB [options] INPUT...\n"
+	"\n"
+	"Runs the calped pedestrian detector. Each INPUT is an image file (PNG, JPEG, PPM,\n"
+	"PGM), a folder whose *.png, *.jpg, *.jpeg, *.ppm and *.pgm files are taken in name\n"
+	"order, or a video file (.avi, .mp4, .mkv, ... decoded by ffmpeg). Frames are numbered\n"
+	"from 1 across the inputs. With --calib the calibrated method runs (docs/cli.md).\n"
+	"\n"
+	"options:\n",
+	"\n"
+	"exit status: 0 success, 1 runtime error, 2 usage error\n",
+};
+
+struct Options {
+	DetectorOptions detector;
+	std::string csvPath;
+	std::string motPath;
+	std::string jsonlPath; // "-" means standard output
+	std::string overlayDir;
+	long overlayEvery = 1;
+	long maxFrames = 0; // 0 means every frame
+	bool quiet = false;
+	std::vector<std::string> inputs;
+};
+
+std::vector<OptionSpec> optionTable()
+{
+	return joinOptions(detectorOptionTable(DetectorFlags::All), {
+		{ "csv", "FILE", "write detections as CSV: frame,x,y,w,h,score,ground_x,ground_y,\n"
+				 "world_height (world fields empty without --calib)" },
+		{ "mot", "FILE", "write MOTChallenge detections: frame,-1,x,y,w,h,score,gx,gy,height\n"
+				 "(-1 for the world fields without --calib)" },
+		{ "jsonl", "FILE|-", "write one JSON object per frame (- for standard output)" },
+		{ "overlay", "DIR", "write DIR/NNNNNN.png with the detections drawn in green" },
+		{ "overlay-every", "K", "overlay only frames 1, 1+K, 1+2K, ... (default 1)" },
+		{ "max-frames", "N", "stop after the first N frames" },
+		{ "quiet", nullptr, "no progress, warnings or summary on standard error" },
+	});
+}
+
+// -1 to go on, else the exit status.
+int parseOptions(int argc, const char *const *argv, Options &out)
+{
+	ParsedArgs args;
+	const int rc = parseCommandLine(kProgram, optionTable(), true, argc, argv, args,
+					[&](const ParsedOption &o, std::string &e) {
+						return takeDetectorOption(o, out.detector, e);
+					});
+	if (rc >= 0)
+		return rc;
+	std::string error;
+	for (const ParsedOption &o : args.options) {
+		const std::string &n = o.name;
+		bool ok = true;
+		if (n == "csv" || n == "mot" || n == "jsonl" || n == "overlay")
+			ok = nonEmpty(o, "a file or folder name",
+				      n == "csv" ? out.csvPath : n == "mot" ? out.motPath
+						   : n == "jsonl" ? out.jsonlPath : out.overlayDir, error);
+		else if (n == "overlay-every")
+			ok = wholeIn(o, 1, 1000000000L, out.overlayEvery, error);
+		else if (n == "max-frames")
+			ok = wholeIn(o, 1, 1000000000000L, out.maxFrames, error);
+		else if (n == "quiet")
+			out.quiet = true;
+		if (!ok)
+			return usageError(kProgram, error);
+	}
+	out.inputs = args.positional;
+	if (!checkDetectorOptions(out.detector, true, DetectorFlags::All, error))
+		return usageError(kProgram, error);
+	if (out.inputs.empty())
+		return usageError(kProgram, "no input images, folders or videos given (try --help)");
+	const std::string *outputs[] = { &out.csvPath, &out.motPath, &out.jsonlPath };
+	for (int i = 0; i < 3; i++)
+		for (int j = i + 1; j < 3; j++)
+			if (!outputs[i]->empty() && *outputs[i] == *outputs[j])
+				return usageError(kProgram, "--csv, --mot and --jsonl must name different files");
+	return -1;
+}
+
 int fail(int code, std::string message)
 {
-	return cliFail("calped-detect", code, std::move(message));
+	return cliFail(kProgram.name, code, std::move(message));
+}
+
+// One frame source of the run: an image file or a video (frames follow each other).
+struct Input {
+	std::string path;
+	bool video = false;
+	int width = 0, height = 0; // a video's frame size (ffprobe)
+};
+
+bool listInputs(const std::vector<std::string> &paths, std::vector<Input> &out,
+		std::string &error)
+{
+	for (const std::string &path : paths) {
+		if (ports::isVideoFileName(path) && isRegularFile(path)) {
+			out.push_back({ path, true });
+			continue;
+		}
+		std::vector<std::string> files;
+		if (!listFrames({ path }, files, error))
+			return false;
+		for (std::string &f : files)
+			out.push_back({ std::move(f), false });
+	}
+	return true;
 }
 
 std::string frameLabel(long frame, const std::string &path)
@@ -39,150 +142,168 @@ std::string frameLabel(long frame, const std::string &path)
 	return "frame " + std::to_string(frame) + " (" + path + ")";
 }
 
-std::string overlayPath(const std::string &dir, long frame)
-{
-	char name[32];
-	std::snprintf(name, sizeof(name), "%06ld.png", frame);
-	return dir + "/" + name;
-}
+// Writes one frame's outputs; false with `error` when an overlay cannot be written.
+struct Outputs {
+	OutputFile csv, mot, jsonl;
+	std::string overlayDir;
+	long overlayEvery = 1;
+
+	bool write(long frame, const std::string &path, const char *method, const RgbImage &image,
+		   double ms, const Detections &dets, std::string &error)
+	{
+		if (csv.isOpen())
+			writeCsvRows(csv.get(), frame, dets);
+		if (mot.isOpen())
+			writeMotRows(mot.get(), frame, dets);
+		if (jsonl.isOpen()) {
+			JsonFrame record;
+			record.frame = frame;
+			record.method = method;
+			record.file = path.c_str();
+			record.width = image.width;
+			record.height = image.height;
+			record.ms = ms;
+			writeJsonFrame(jsonl.get(), record, dets);
+		}
+		if (!overlayDir.empty() && (frame - 1) % overlayEvery == 0)
+			return writePng(overlayDir + "/" + overlayFileName(frame), renderOverlay(image, dets),
+					error);
+		return true;
+	}
+};
 
 int run(const Options &opt)
 {
 	std::string error;
-
-	std::vector<std::string> frames;
-	if (!listFrames(opt.inputs, frames, error))
+	std::vector<Input> inputs;
+	if (!listInputs(opt.inputs, inputs, error))
 		return fail(kExitRuntime, error);
-	if (opt.maxFrames > 0 && static_cast<size_t>(opt.maxFrames) < frames.size())
-		frames.resize(static_cast<size_t>(opt.maxFrames));
+	bool anyVideo = false;
+	for (const Input &in : inputs)
+		anyVideo = anyVideo || in.video;
+	if (opt.maxFrames > 0 && static_cast<size_t>(opt.maxFrames) < inputs.size())
+		inputs.resize(static_cast<size_t>(opt.maxFrames));
 
 	// Headers only: finds undecodable files before any work and sizes the detector for
 	// the largest frame, so frames of mixed sizes all fit.
 	int maxW = 0, maxH = 0;
-	for (const std::string &path : frames) {
+	ports::ImageDecoder decoder;
+	for (Input &in : inputs) {
 		int w = 0, h = 0;
-		if (!probeImage(path, w, h, error))
+		if (in.video) {
+			const Status st = ports::probeVideo(in.path, w, h);
+			if (!st.ok())
+				return fail(kExitRuntime, st.message());
+			in.width = w;
+			in.height = h;
+		} else if (!decoder.probe(in.path, w, h, error)) {
 			return fail(kExitRuntime, error);
+		}
 		maxW = std::max(maxW, w);
 		maxH = std::max(maxH, h);
 	}
 
-	std::vector<uint8_t> blob;
-	if (!readFile(opt.model, blob, error, "model "))
+	DetectorInputs loaded;
+	if (!loadDetectorInputs(opt.detector, loaded, error))
 		return fail(kExitRuntime, error);
-	Model model;
-	Status st = loadModel(blob.data(), blob.size(), model);
-	if (!st.ok())
-		return fail(kExitRuntime, "model " + opt.model + ": " + st.message());
-	blob = std::vector<uint8_t>();
-
-	DetectorConfig config;
-	config.maxWidth = maxW;
-	config.maxHeight = maxH;
-	config.resize = opt.resize;
-	config.resizeAt = opt.resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
-	if (opt.rejectStatic)
-		config.staticRejection = StaticRejection();
-	config.nms = !opt.noNms;
-	CameraModel camera;
-	if (!opt.calibPath.empty()) {
-		std::vector<uint8_t> text;
-		if (!readFile(opt.calibPath, text, error, "calibration "))
-			return fail(kExitRuntime, error);
-		st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
-				     opt.calibPath.c_str(), camera);
-		if (!st.ok())
-			return fail(kExitRuntime, std::string("calibration: ") + st.message());
-		config.camera = &camera;
-	}
-	config.method = opt.calibrated ? DetectionMethod::Calibrated : DetectionMethod::Generic;
-	if (opt.calibrated || opt.calibratedPyramid) { // refused with the generic method
-		CalibratedSettings cal;
-		cal.levels = opt.calibratedPyramid ? PyramidLevels::Placed : PyramidLevels::Toolbox;
-		cal.minPersonHeight = opt.minHeight;
-		cal.maxPersonHeight = opt.maxHeight;
-		cal.boxVoting = !opt.noBoxVoting && !opt.noNms;
-		cal.scoreRatio = !opt.noNms;
-		config.calibrated = cal;
-	}
 	std::unique_ptr<Detector> detector;
-	st = Detector::create(model, config, detector);
-	if (!st.ok())
-		return fail(kExitRuntime, std::string("cannot set up the detector for ") +
-						  std::to_string(maxW) + "x" + std::to_string(maxH) +
-						  " frames: " + st.message());
+	if (!createDetector(loaded.model, opt.detector, maxW, maxH,
+			    loaded.hasCamera ? &loaded.camera : nullptr, detector, error))
+		return fail(kExitRuntime, error);
+	const char *method = opt.detector.methodName();
 
-	OutputFile csv, jsonl;
+	Outputs out;
+	out.overlayDir = opt.overlayDir;
+	out.overlayEvery = opt.overlayEvery;
 	if (!opt.csvPath.empty()) {
-		if (!csv.open(opt.csvPath, error))
+		if (!out.csv.open(opt.csvPath, error))
 			return fail(kExitRuntime, error);
-		writeCsvHeader(csv.get());
+		writeCsvHeader(out.csv.get());
 	}
-	if (!opt.jsonlPath.empty() && !jsonl.open(opt.jsonlPath, error))
+	if (!opt.motPath.empty() && !out.mot.open(opt.motPath, error))
+		return fail(kExitRuntime, error);
+	if (!opt.jsonlPath.empty() && !out.jsonl.open(opt.jsonlPath, error))
 		return fail(kExitRuntime, error);
 	if (!opt.overlayDir.empty() && !makeDirectories(opt.overlayDir, error))
 		return fail(kExitRuntime, error);
 
-	RunStats stats(static_cast<long>(frames.size()));
+	RunStats stats(anyVideo ? -1 : static_cast<long>(inputs.size()));
 	RgbImage image;
-	for (size_t i = 0; i < frames.size(); i++) {
-		const long frame = static_cast<long>(i) + 1;
-		const std::string &path = frames[i];
-		if (!decodeImage(path, image, error))
-			return fail(kExitRuntime, error);
-
-		Detections dets;
-		st = detector->detect(ImageView::rgb8(image.pixels.data(), image.width, image.height), dets);
-		if (st.code() == ErrorCode::ImageTooSmall) {
-			// No window fits: the honest answer is "no pedestrians", not a failed run.
-			if (!opt.quiet)
-				std::fprintf(stderr, "calped-detect: warning: %s is smaller than the model window, no detections\n",
-					     frameLabel(frame, path).c_str());
-			dets = Detections();
-		} else if (!st.ok()) {
-			return fail(kExitRuntime, frameLabel(frame, path) + ": " + st.message());
+	std::vector<Detection> kept;
+	ports::VideoPipe pipe;
+	long frame = 0;
+	for (const Input &in : inputs) {
+		if (in.video) {
+			const Status st = pipe.open(in.path, in.width, in.height);
+			if (!st.ok())
+				return fail(kExitRuntime, st.message());
+			image.width = in.width;
+			image.height = in.height;
+			image.pixels.resize(static_cast<size_t>(in.width) * in.height * 3);
 		}
-		const double ms = st.ok() ? detector->lastStats().msTotal : 0.0;
-
-		if (csv.isOpen())
-			writeCsvRows(csv.get(), frame, dets);
-		if (jsonl.isOpen())
-			writeJsonlFrame(jsonl.get(), frame, path, ms, dets);
-		if (!opt.overlayDir.empty() && (frame - 1) % opt.overlayEvery == 0) {
-			if (!writePng(overlayPath(opt.overlayDir, frame), renderOverlay(image, dets), error))
+		for (;;) {
+			if (opt.maxFrames > 0 && frame >= opt.maxFrames)
+				break;
+			if (in.video) {
+				const Status st = pipe.read(image.pixels.data());
+				if (st.code() == ErrorCode::EndOfStream)
+					break;
+				if (!st.ok())
+					return fail(kExitRuntime, st.message());
+			} else if (!decoder.decode(in.path, image, error)) {
 				return fail(kExitRuntime, error);
+			}
+			frame++;
+
+			Detections dets;
+			Status st = detector->detect(
+				ImageView::rgb8(image.pixels.data(), image.width, image.height), dets);
+			if (st.code() == ErrorCode::ImageTooSmall) {
+				// No window fits: the honest answer is "no pedestrians", not a failed run.
+				if (!opt.quiet)
+					std::fprintf(stderr, "calped-detect: warning: %s is smaller than the model window, no detections\n",
+						     frameLabel(frame, in.path).c_str());
+				dets = Detections();
+			} else if (!st.ok()) {
+				return fail(kExitRuntime, frameLabel(frame, in.path) + ": " + st.message());
+			}
+			const double ms = st.ok() ? detector->lastStats().msTotal : 0.0;
+			dets = filterByScore(dets, opt.detector.minScore, kept);
+			if (!out.write(frame, in.path, method, image, ms, dets, error))
+				return fail(kExitRuntime, error);
+
+			stats.addFrame(ms, dets.count);
+			if (!opt.quiet && stats.progressDue())
+				stats.printProgress();
+			if (!in.video)
+				break; // one frame per image
 		}
-
-		stats.addFrame(ms, dets.count);
-		if (!opt.quiet && stats.progressDue())
-			stats.printProgress();
+		pipe.close();
 	}
+	if (frame == 0)
+		return fail(kExitRuntime, "no frames in the inputs");
 
-	if (!csv.close(error) || !jsonl.close(error))
+	if (!out.csv.close(error) || !out.mot.close(error) || !out.jsonl.close(error))
 		return fail(kExitRuntime, error);
 	if (!opt.quiet)
-		stats.printSummary();
+		stats.printSummary(method);
 	return 0;
 }
 
 } // namespace
 
-} // namespace calped::detect_tool
+} // namespace calped::apps
 
 int main(int argc, char **argv)
 {
-	using namespace calped::detect_tool;
+	using namespace calped::apps;
 
 	// A closed pipe on --jsonl - becomes a reported write error instead of a silent death.
 	std::signal(SIGPIPE, SIG_IGN);
 
 	Options opt;
-	std::string error;
-	if (!parseOptions(argc, argv, opt, error))
-		return fail(kExitUsage, error);
-	if (opt.help) {
-		std::fputs(usageText(), stdout);
-		return 0;
-	}
-	return calped::runGuarded("calped-detect", [&] { return run(opt); });
+	const int rc = parseOptions(argc, argv, opt);
+	if (rc >= 0)
+		return rc;
+	return runGuarded(kProgram.name, [&] { return run(opt); });
 }

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numeric>
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 RunStats::RunStats(long totalFrames)
 	: total_(totalFrames), start_(Clock::now()), lastProgress_(start_)
@@ -57,19 +57,24 @@ double RunStats::wallSeconds() const
 void RunStats::printProgress() const
 {
 	double wall = wallSeconds();
-	std::fprintf(stderr, "calped-detect: %ld/%ld frames, detector %.1f ms/frame (mean), %.1f frames/s overall\n",
-		     frames(), total_, meanMs(), wall > 0 ? frames() / wall : 0.0);
+	// A video's length is not known up front: then only the frames so far.
+	char total[32] = "";
+	if (total_ > 0)
+		std::snprintf(total, sizeof(total), "/%ld", total_);
+	std::fprintf(stderr, "calped-detect: %ld%s frames, detector %.1f ms/frame (mean), %.1f frames/s overall\n",
+		     frames(), total, meanMs(), wall > 0 ? frames() / wall : 0.0);
 }
 
-void RunStats::printSummary() const
+void RunStats::printSummary(const char *method) const
 {
 	// Stable key=value format: scripts/run-main.sh reads it (documented in docs/cli.md).
 	long n = frames();
 	std::fprintf(stderr,
 		     "calped-detect: summary: frames=%ld detections=%llu per_frame=%.2f "
-		     "ms_median=%.2f ms_mean=%.2f wall_s=%.2f\n",
+		     "ms_median=%.2f ms_mean=%.2f wall_s=%.2f method=%s\n",
 		     n, static_cast<unsigned long long>(detections_),
-		     n ? static_cast<double>(detections_) / n : 0.0, medianMs(), meanMs(), wallSeconds());
+		     n ? static_cast<double>(detections_) / n : 0.0, medianMs(), meanMs(), wallSeconds(),
+		     method);
 }
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

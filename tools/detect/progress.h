@@ -6,12 +6,12 @@
 #include <cstdint>
 #include <vector>
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 class RunStats
 {
 public:
-	explicit RunStats(long totalFrames);
+	explicit RunStats(long totalFrames); // <= 0: unknown (videos)
 
 	// Records one frame: the detector's own time (FrameStats::msTotal) and its detections.
 	void addFrame(double detectorMs, int detections);
@@ -20,7 +20,8 @@ public:
 	bool progressDue();
 
 	void printProgress() const; // "calped-detect: 120/795 frames, ..." on stderr
-	void printSummary() const;  // "calped-detect: summary: frames=... ms_median=..."
+	// "calped-detect: summary: frames=... ms_median=... method=calibrated"
+	void printSummary(const char *method) const;
 
 	long frames() const { return static_cast<long>(ms_.size()); }
 	uint64_t detections() const { return detections_; }
@@ -37,4 +38,4 @@ private:
 	Clock::time_point lastProgress_;
 };
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

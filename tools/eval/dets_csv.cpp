@@ -61,16 +61,20 @@ bool readDetectionsCsv(const std::string &path, long maxFrame, SequenceDetection
 		if (line.find_first_not_of(" \t\r") == std::string::npos)
 			return true;
 		const std::vector<std::string> f = splitCsvLine(line);
+		// calped-detect's CSV adds ground_x,ground_y,world_height (empty without a
+		// calibration): accepted and not used.
 		if (lineNo == 1 && !f.empty() && f[0] == "frame") {
-			if (f.size() == 6 && f[1] == "x" && f[2] == "y" && f[3] == "w" && f[4] == "h" &&
-			    f[5] == "score")
+			if ((f.size() == 6 || f.size() == 9) && f[1] == "x" && f[2] == "y" && f[3] == "w" &&
+			    f[4] == "h" && f[5] == "score" &&
+			    (f.size() == 6 || (f[6] == "ground_x" && f[7] == "ground_y" && f[8] == "world_height")))
 				return true;
-			error = lineError(path, lineNo, "header is not \"frame,x,y,w,h,score\"");
+			error = lineError(path, lineNo, "header is not \"frame,x,y,w,h,score\" "
+							"(or calped-detect's, with ground_x,ground_y,world_height)");
 			return false;
 		}
-		if (f.size() != 6) {
+		if (f.size() != 6 && f.size() != 9) {
 			error = lineError(path, lineNo, "expected 6 comma-separated fields "
-							"(frame,x,y,w,h,score), got " +
+							"(frame,x,y,w,h,score) or calped-detect's 9, got " +
 								std::to_string(f.size()));
 			return false;
 		}

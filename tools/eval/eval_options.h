@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "args.h"
+#include "detector_options.h"
+#include "program.h"
+
 namespace calped::eval_tool {
 
 struct EvalOptions {
@@ -28,15 +32,20 @@ struct EvalOptions {
 	int jobs = 1;
 	std::vector<std::string> scoreOnly; // detection CSVs to score instead of running
 	std::string label;                  // method name for a single --score-only file
-	bool resizeInPyramid = false; // DetectorConfig::resizeInPyramid for every run
-	bool calibratedPyramid = false; // DetectorConfig::calibratedPyramid, calibrated runs
+	std::string framesJsonlDir; // DIR/<method>_r<resize>.jsonl: the JSON frame records
+	// --resize-at and --levels (with --model and --calib, copied into model and calib):
+	// each run's DetectorOptions start from these, then take its method and resize.
+	apps::DetectorOptions detector;
 	bool quiet = false;
 	bool help = false;
+	bool version = false;
 };
 
 // On a usage error returns false with a one-line `error` (no program-name prefix).
 bool parseEvalOptions(int argc, const char *const *argv, EvalOptions &out, std::string &error);
 
-const char *evalUsageText();
+// The table --help is generated from, and the text around it.
+const std::vector<apps::OptionSpec> &evalOptionTable();
+extern const apps::ProgramInfo kEvalProgram;
 
 } // namespace calped::eval_tool

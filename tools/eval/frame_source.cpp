@@ -7,7 +7,9 @@
 #include <cstring>
 #include <sys/stat.h>
 
-#include "../detect/frame_list.h"
+#include "args.h"
+#include "frame_list.h"
+#include "video_pipe.h"
 #include "external_tools.h"
 #include "text_fields.h"
 
@@ -24,81 +26,55 @@ public:
 	{
 		if (index_ >= input_.files.size())
 			return false;
-		return detect_tool::decodeImage(input_.files[index_++], image, error);
+		return decoder_.decode(input_.files[index_++], image, error);
 	}
 
 private:
 	const FrameInput &input_;
+	ports::ImageDecoder decoder_;
 	size_t index_ = 0;
 };
 
-// Reads raw RGB frames from ffmpeg's standard output.
+// Raw RGB frames from the file port's ffmpeg pipe.
 class VideoSource : public FrameSource
 {
 public:
-	VideoSource(const FrameInput &input, FILE *pipe) : input_(input), pipe_(pipe) {}
-	~VideoSource() override
+	explicit VideoSource(const FrameInput &input) : input_(input) {}
+
+	bool open(std::string &error)
 	{
-		if (pipe_)
-			pclose(pipe_); // stopped early: ffmpeg's broken pipe is expected
+		const Status st = pipe_.open(input_.video, input_.width, input_.height);
+		if (!st.ok())
+			error = st.message();
+		return st.ok();
 	}
 
 	bool next(RgbImage &image, std::string &error) override
 	{
-		if (!pipe_ || (input_.maxFrames > 0 && frames_ >= input_.maxFrames))
+		if (input_.maxFrames > 0 && frames_ >= input_.maxFrames)
 			return false;
-		const size_t bytes = static_cast<size_t>(input_.width) * input_.height * 3;
 		image.width = input_.width;
 		image.height = input_.height;
-		image.pixels.resize(bytes);
-		const size_t got = std::fread(image.pixels.data(), 1, bytes, pipe_);
-		if (got == bytes) {
+		image.pixels.resize(static_cast<size_t>(input_.width) * input_.height * 3);
+		const Status st = pipe_.read(image.pixels.data());
+		if (st.ok()) {
 			frames_++;
 			return true;
 		}
-		const bool readError = std::ferror(pipe_) != 0;
-		const int status = pclose(pipe_);
-		pipe_ = nullptr;
-		if (readError) {
-			error = "cannot read ffmpeg's output for " + input_.video + ": " + std::strerror(errno);
-		} else if (status != 0) {
-			error = "ffmpeg failed decoding " + input_.video + " (" + describeExitStatus(status) +
-				") after " + std::to_string(frames_) + " frames";
-		} else if (got != 0) {
-			error = "ffmpeg's output for " + input_.video + " ended inside frame " +
-				std::to_string(frames_ + 1) + " (" + std::to_string(got) + " of " +
-				std::to_string(bytes) + " bytes): is the frame size " +
-				std::to_string(input_.width) + "x" + std::to_string(input_.height) + " right?";
-		} else if (frames_ == 0) {
+		if (st.code() != ErrorCode::EndOfStream)
+			error = st.message();
+		else if (frames_ == 0)
 			error = "ffmpeg decoded no frames from " + input_.video;
-		} else {
-			return false; // the end
-		}
 		return false;
 	}
 
 private:
 	const FrameInput &input_;
-	FILE *pipe_;
+	ports::VideoPipe pipe_;
 	long frames_ = 0;
 };
 
 } // namespace
-
-bool parseFrameSize(const std::string &text, int &width, int &height)
-{
-	const size_t x = text.find('x');
-	if (x == std::string::npos)
-		return false;
-	long w, h;
-	if (!parseLong(text.substr(0, x), w) || !parseLong(text.substr(x + 1), h))
-		return false;
-	if (w < 1 || h < 1 || w > 16384 || h > 16384)
-		return false;
-	width = static_cast<int>(w);
-	height = static_cast<int>(h);
-	return true;
-}
 
 std::string FrameInput::label(long frame) const
 {
@@ -108,22 +84,20 @@ std::string FrameInput::label(long frame) const
 	return "frame " + std::to_string(frame) + (k < files.size() ? " (" + files[k] + ")" : "");
 }
 
+std::string FrameInput::file(long frame) const
+{
+	const size_t k = static_cast<size_t>(frame - 1);
+	return isVideo() ? video : k < files.size() ? files[k] : std::string();
+}
+
 std::unique_ptr<FrameSource> FrameInput::open(std::string &error) const
 {
 	if (!isVideo())
 		return std::unique_ptr<FrameSource>(new FolderSource(*this));
-	// With a frame limit ffmpeg stops by itself rather than on a broken pipe (which it
-	// reports, as it ignores SIGPIPE).
-	const std::string limit = maxFrames > 0 ? " -frames:v " + std::to_string(maxFrames) : "";
-	const std::string cmd = "ffmpeg -nostdin -loglevel error -i " + shellQuote(video) + limit +
-				" -f rawvideo -pix_fmt rgb24 -";
-	std::fflush(nullptr);
-	FILE *pipe = popen(cmd.c_str(), "r");
-	if (!pipe) {
-		error = "cannot run ffmpeg: " + std::string(std::strerror(errno));
+	std::unique_ptr<VideoSource> source(new VideoSource(*this));
+	if (!source->open(error))
 		return nullptr;
-	}
-	return std::unique_ptr<FrameSource>(new VideoSource(*this, pipe));
+	return source;
 }
 
 bool resolveFolderInput(const std::string &dir, long maxFrames, FrameInput &out,
@@ -131,14 +105,15 @@ bool resolveFolderInput(const std::string &dir, long maxFrames, FrameInput &out,
 {
 	out = FrameInput();
 	out.maxFrames = maxFrames;
-	if (!detect_tool::listFrames({ dir }, out.files, error))
+	if (!apps::listFrames({ dir }, out.files, error))
 		return false;
 	if (maxFrames > 0 && static_cast<size_t>(maxFrames) < out.files.size())
 		out.files.resize(static_cast<size_t>(maxFrames));
 	// Headers only: an undecodable file fails now, not after minutes of work.
+	ports::ImageDecoder decoder;
 	for (const std::string &path : out.files) {
 		int w = 0, h = 0;
-		if (!detect_tool::probeImage(path, w, h, error))
+		if (!decoder.probe(path, w, h, error))
 			return false;
 		out.width = std::max(out.width, w);
 		out.height = std::max(out.height, h);
@@ -162,27 +137,15 @@ bool resolveVideoInput(const std::string &path, const std::string &size, long ma
 		return false;
 	}
 	if (!size.empty()) {
-		if (!parseFrameSize(size, out.width, out.height)) {
+		if (!apps::parseFrameSize(size, out.width, out.height)) {
 			error = "--size must be WIDTHxHEIGHT, e.g. 768x576, got '" + size + "'";
 			return false;
 		}
 		return true;
 	}
-	if (!findExecutable("ffprobe")) {
-		error = "no ffprobe to read the frame size of " + path + "; give it with --size WxH";
-		return false;
-	}
-	std::string text;
-	if (!runCapture("ffprobe -v error -select_streams v:0 -show_entries stream=width,height "
-			"-of csv=p=0:s=x " + shellQuote(path),
-			text, error)) {
-		error = "cannot read the frame size of " + path + ": " + error;
-		return false;
-	}
-	while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == 'x'))
-		text.pop_back();
-	if (!parseFrameSize(text, out.width, out.height)) {
-		error = "ffprobe gave no frame size for " + path + " ('" + text + "'); give it with --size WxH";
+	const Status probed = ports::probeVideo(path, out.width, out.height);
+	if (!probed.ok()) {
+		error = std::string(probed.message()) + "; or give the frame size with --size WxH";
 		return false;
 	}
 	return true;

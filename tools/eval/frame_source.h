@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Where frames come from: a folder of images (sorted by name) or a video decoded on the fly
-// by an ffmpeg pipe (rawvideo rgb24). Frames are numbered 1..N in that order.
+// by the file port's ffmpeg pipe (ports/file/video_pipe.h). Frames are numbered 1..N.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "../detect/image_io.h"
+#include "image_io.h"
 
 namespace calped::eval_tool {
 
-using detect_tool::RgbImage;
+using ports::RgbImage;
 
 class FrameSource
 {
@@ -34,6 +34,8 @@ struct FrameInput {
 	long knownFrames() const { return isVideo() ? -1 : static_cast<long>(files.size()); }
 	// "frame 12 (data/pets/frames/000012.png)" or "frame 12 of vtest.avi".
 	std::string label(long frame) const;
+	// The image file of a frame, or the video.
+	std::string file(long frame) const;
 	std::unique_ptr<FrameSource> open(std::string &error) const;
 };
 
@@ -46,7 +48,5 @@ bool resolveFolderInput(const std::string &dir, long maxFrames, FrameInput &out,
 bool resolveVideoInput(const std::string &path, const std::string &size, long maxFrames,
 		       FrameInput &out, std::string &error);
 
-// Parses "768x576".
-bool parseFrameSize(const std::string &text, int &width, int &height);
 
 } // namespace calped::eval_tool

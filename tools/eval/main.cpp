@@ -13,9 +13,10 @@
 
 #include <calped/calped.h>
 
-#include "../detect/cli_error.h"
-#include "../detect/file_io.h"
-#include "../detect/frame_list.h"
+#include "cli_error.h"
+#include "file_io.h"
+#include "frame_list.h"
+#include "writers.h"
 #include "dets_csv.h"
 #include "eval_options.h"
 #include "frame_source.h"
@@ -30,8 +31,9 @@
 #include "runner.h"
 #include "text_fields.h"
 
-using calped::kExitRuntime;
-using calped::kExitUsage;
+using calped::apps::cliFail;
+using calped::apps::kExitRuntime;
+using calped::apps::kExitUsage;
 
 namespace calped::eval_tool {
 
@@ -50,8 +52,8 @@ void notice(const EvalOptions &opt, const std::string &message)
 
 bool makeOutputDirs(const EvalOptions &opt, std::string &error)
 {
-	for (const std::string *dir : { &opt.detsDir, &opt.plotsDir, &opt.overlayDir })
-		if (!dir->empty() && !detect_tool::makeDirectories(*dir, error))
+	for (const std::string *dir : { &opt.detsDir, &opt.plotsDir, &opt.overlayDir, &opt.framesJsonlDir })
+		if (!dir->empty() && !apps::makeDirectories(*dir, error))
 			return false;
 	return true;
 }
@@ -96,11 +98,9 @@ int writeOutputs(const EvalOptions &opt, const std::vector<RunResult> &runs,
 	if (ran && !opt.overlayDir.empty()) {
 		for (const RunResult &r : runs)
 			for (long f : opt.overlayFrames)
-				if (f <= r.frames) {
-					char name[32];
-					std::snprintf(name, sizeof(name), "_%06ld.png", f);
-					md.overlays.push_back(opt.overlayDir + "/" + runStem(r.method, r.resize) + name);
-				}
+				if (f <= r.frames)
+					md.overlays.push_back(opt.overlayDir + "/" + runStem(r.method, r.resize) + "/" +
+							      apps::overlayFileName(f));
 	}
 	int rc = 0;
 	if (!opt.plotsDir.empty() && !runs.empty()) {
@@ -123,7 +123,7 @@ int scoreOnly(const EvalOptions &opt, const GroundTruth &truth)
 	std::string framesText = std::to_string(frames) + " frames";
 	if (!opt.framesDir.empty()) {
 		std::vector<std::string> files;
-		if (!detect_tool::listFrames({ opt.framesDir }, files, error))
+		if (!apps::listFrames({ opt.framesDir }, files, error))
 			return fail(kExitRuntime, error);
 		frames = static_cast<long>(files.size());
 		if (opt.maxFrames > 0)
@@ -184,27 +184,21 @@ int run(const EvalOptions &opt)
 	if (!resolved)
 		return fail(kExitRuntime, error);
 
-	std::vector<uint8_t> blob;
-	if (!detect_tool::readFile(opt.model, blob, error, "model "))
-		return fail(kExitRuntime, error);
 	Model model;
-	Status st = loadModel(blob.data(), blob.size(), model);
-	if (!st.ok())
-		return fail(kExitRuntime, "model " + opt.model + ": " + st.message());
-	blob = std::vector<uint8_t>();
+	if (!apps::loadModelFile(opt.model, model, error))
+		return fail(kExitRuntime, error);
 	if (!makeOutputDirs(opt, error))
 		return fail(kExitRuntime, error);
 
 	RunSettings settings;
 	settings.input = &input;
 	settings.model = &model;
-	settings.calibrationPath = opt.calib;
+	settings.options = opt.detector;
+	settings.framesJsonlDir = opt.framesJsonlDir;
 	settings.truth = &truth;
 	settings.overlayDir = opt.overlayDir;
 	settings.overlayFrames = opt.overlayFrames;
 	settings.overlayScore = opt.overlayScore;
-	settings.resizeInPyramid = opt.resizeInPyramid;
-	settings.calibratedPyramid = opt.calibratedPyramid;
 	settings.quiet = opt.quiet;
 	notice(opt, std::to_string(specs.size()) + " run(s), " +
 			    (input.isVideo() ? "video " + input.video
@@ -259,8 +253,12 @@ int main(int argc, char **argv)
 	if (!parseEvalOptions(argc, argv, opt, error))
 		return fail(kExitUsage, error);
 	if (opt.help) {
-		std::fputs(evalUsageText(), stdout);
+		calped::apps::printHelp(kEvalProgram, evalOptionTable());
 		return 0;
 	}
-	return calped::runGuarded("calped-eval", [&] { return run(opt); });
+	if (opt.version) {
+		std::printf("%s\n", calped::apps::versionLine(kEvalProgram.name).c_str());
+		return 0;
+	}
+	return calped::apps::runGuarded("calped-eval", [&] { return run(opt); });
 }

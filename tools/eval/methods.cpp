@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "methods.h"
 
-#include "../detect/file_io.h"
 
 namespace calped::eval_tool {
 
@@ -18,18 +17,11 @@ public:
 	const FrameStats &lastStats() const override { return detector_->lastStats(); }
 
 protected:
-	bool setUp(const MethodSetup &setup, DetectorConfig config, std::string &error)
+	bool setUp(const MethodSetup &setup, const apps::DetectorOptions &options,
+		   const CameraModel *camera, std::string &error)
 	{
-		config.maxWidth = setup.maxWidth;
-		config.maxHeight = setup.maxHeight;
-		config.resize = setup.resize;
-		config.resizeAt = setup.resizeInPyramid ? ResizeAt::Pyramid : ResizeAt::Frame;
-		Status st = Detector::create(*setup.model, config, detector_);
-		if (!st.ok()) {
-			error = std::string("cannot set up the detector: ") + st.message();
-			return false;
-		}
-		return true;
+		return apps::createDetector(*setup.model, options, setup.maxWidth, setup.maxHeight,
+					    camera, detector_, error);
 	}
 
 	std::unique_ptr<Detector> detector_;
@@ -43,9 +35,9 @@ public:
 			   std::string &error)
 	{
 		std::unique_ptr<GenericMethod> m(new GenericMethod);
-		DetectorConfig config;
-		config.method = DetectionMethod::Generic;
-		if (!m->setUp(setup, config, error))
+		apps::DetectorOptions options = setup.options;
+		options.method = apps::MethodChoice::Generic;
+		if (!m->setUp(setup, options, nullptr, error))
 			return false;
 		out = std::move(m);
 		return true;
@@ -74,25 +66,13 @@ private:
 	static bool createWith(const MethodSetup &setup, bool rejectStatic,
 			       std::unique_ptr<Method> &out, std::string &error)
 	{
-		std::vector<uint8_t> text;
-		if (!detect_tool::readFile(setup.calibrationPath, text, error, "calibration "))
-			return false;
 		std::unique_ptr<CalibratedMethod> m(new CalibratedMethod);
-		Status st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
-					    setup.calibrationPath.c_str(), m->camera_);
-		if (!st.ok()) {
-			error = std::string("calibration: ") + st.message();
+		if (!apps::loadCalibrationFile(setup.options.calibPath, m->camera_, error))
 			return false;
-		}
-		DetectorConfig config;
-		config.method = DetectionMethod::Calibrated;
-		config.camera = &m->camera_;
-		if (rejectStatic)
-			config.staticRejection = StaticRejection();
-		CalibratedSettings cal;
-		cal.levels = setup.calibratedPyramid ? PyramidLevels::Placed : PyramidLevels::Toolbox;
-		config.calibrated = cal;
-		if (!m->setUp(setup, config, error))
+		apps::DetectorOptions options = setup.options;
+		options.method = apps::MethodChoice::Calibrated;
+		options.rejectStatic = rejectStatic;
+		if (!m->setUp(setup, options, &m->camera_, error))
 			return false;
 		out = std::move(m);
 		return true;

@@ -9,16 +9,17 @@
 
 #include <calped/calped.h>
 
+#include "detector_options.h"
+
 namespace calped::eval_tool {
 
 // What every method is set up with; a method ignores what it does not use.
 struct MethodSetup {
 	const Model *model = nullptr;
-	std::string calibrationPath; // --calib FILE, may be empty
+	// --calib, --resize-at, --levels and the run's resize; each method sets the method
+	// and static rejection (apps::makeDetectorConfig makes the DetectorConfig).
+	apps::DetectorOptions options;
 	int maxWidth = 0, maxHeight = 0;
-	double resize = 1.0;
-	bool resizeInPyramid = false;
-	bool calibratedPyramid = false; // calibrated methods only
 };
 
 // A detector as the harness drives it: one frame in, detections and the detector's own

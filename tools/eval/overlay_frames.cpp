@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "../detect/overlay.h"
+#include "overlay.h"
 
 namespace calped::eval_tool {
 
-detect_tool::RgbImage renderEvaluationOverlay(const detect_tool::RgbImage &frame,
+ports::RgbImage renderEvaluationOverlay(const ports::RgbImage &frame,
 					      const std::vector<GtBox> &truth,
 					      const std::vector<ScoredBox> &detections,
 					      double minScore)
@@ -16,14 +16,14 @@ detect_tool::RgbImage renderEvaluationOverlay(const detect_tool::RgbImage &frame
 	static const uint8_t kBlue[3] = { 40, 90, 255 };
 	static const uint8_t kGrey[3] = { 160, 160, 160 };
 	static const uint8_t kGreen[3] = { 0, 230, 0 };
-	detect_tool::RgbImage out = frame;
+	ports::RgbImage out = frame;
 	for (const GtBox &g : truth)
-		detect_tool::drawRectangle(out, static_cast<float>(g.box.x), static_cast<float>(g.box.y),
+		apps::drawRectangle(out, static_cast<float>(g.box.x), static_cast<float>(g.box.y),
 					   static_cast<float>(g.box.w), static_cast<float>(g.box.h), 2,
 					   g.ignore ? kGrey : kBlue);
 	for (const ScoredBox &d : detections)
 		if (d.score >= minScore)
-			detect_tool::drawRectangle(out, static_cast<float>(d.box.x),
+			apps::drawRectangle(out, static_cast<float>(d.box.x),
 						   static_cast<float>(d.box.y), static_cast<float>(d.box.w),
 						   static_cast<float>(d.box.h), 2, kGreen);
 	return out;

@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "../detect/image_io.h"
+#include "image_io.h"
 #include "boxes.h"
 
 namespace calped::eval_tool {
 
-detect_tool::RgbImage renderEvaluationOverlay(const detect_tool::RgbImage &frame,
+ports::RgbImage renderEvaluationOverlay(const ports::RgbImage &frame,
 					      const std::vector<GtBox> &truth,
 					      const std::vector<ScoredBox> &detections,
 					      double minScore);

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "../detect/writers.h"
+#include "json_frame.h"
 #include "overlay_frames.h"
 
 namespace calped::eval_tool {
@@ -112,7 +112,7 @@ std::string runsJson(const std::vector<RunResult> &runs)
 		const Evaluation &e = r.evaluation;
 		const RunCounters &c = r.counters;
 		j += i ? ",\n  {" : "\n  {";
-		j += "\"method\": " + detect_tool::jsonString(r.method);
+		j += "\"method\": " + apps::jsonString(r.method);
 		j += ", \"resize\": " + (r.resize > 0 ? jsonNumber(r.resize) : "null");
 		j += ", \"frames\": " + std::to_string(r.frames);
 		j += ", \"gt_boxes\": " + std::to_string(e.groundTruth);
@@ -158,22 +158,6 @@ std::string runsJson(const std::vector<RunResult> &runs)
 	}
 	j += runs.empty() ? "]\n" : "\n]\n";
 	return j;
-}
-
-bool writeTextFile(const std::string &path, const std::string &text, std::string &error)
-{
-	FILE *f = std::fopen(path.c_str(), "w");
-	if (!f) {
-		error = "cannot write " + path + ": " + std::strerror(errno);
-		return false;
-	}
-	const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
-	const int savedErrno = errno;
-	if (std::fclose(f) != 0 || !ok) {
-		error = "cannot write " + path + ": " + (savedErrno ? std::strerror(savedErrno) : "write error");
-		return false;
-	}
-	return true;
 }
 
 } // namespace calped::eval_tool

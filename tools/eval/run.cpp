@@ -6,6 +6,9 @@
 #include <cstdio>
 
 #include "dets_csv.h"
+#include "file_io.h"
+#include "json_frame.h"
+#include "writers.h"
 #include "overlay_frames.h"
 
 namespace calped::eval_tool {
@@ -21,9 +24,7 @@ double msSince(Clock::time_point t)
 
 std::string overlayPath(const RunSettings &s, const std::string &stem, long frame)
 {
-	char name[32];
-	std::snprintf(name, sizeof(name), "_%06ld.png", frame);
-	return s.overlayDir + "/" + stem + name;
+	return s.overlayDir + "/" + stem + "/" + apps::overlayFileName(frame);
 }
 
 } // namespace
@@ -46,17 +47,20 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 
 	MethodSetup setup;
 	setup.model = s.model;
-	setup.calibrationPath = s.calibrationPath;
+	setup.options = s.options;
+	setup.options.resize = resize;
 	setup.maxWidth = s.input->width;
 	setup.maxHeight = s.input->height;
-	setup.resize = resize;
-	setup.resizeInPyramid = s.resizeInPyramid;
-	setup.calibratedPyramid = s.calibratedPyramid;
 	std::unique_ptr<Method> method;
 	if (!entry.create(setup, method, error))
 		return false;
 	std::unique_ptr<FrameSource> source = s.input->open(error);
 	if (!source)
+		return false;
+	if (!s.overlayDir.empty() && !apps::makeDirectories(s.overlayDir + "/" + stem, error))
+		return false;
+	apps::OutputFile jsonl;
+	if (!s.framesJsonlDir.empty() && !jsonl.open(s.framesJsonlDir + "/" + stem + ".jsonl", error))
 		return false;
 
 	RunCounters &c = out.counters;
@@ -118,8 +122,19 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 		    std::find(s.overlayFrames.begin(), s.overlayFrames.end(), frame) != s.overlayFrames.end()) {
 			const RgbImage overlay = renderEvaluationOverlay(image, s.truth->boxes(frame), boxes,
 									 s.overlayScore);
-			if (!detect_tool::writePng(overlayPath(s, stem, frame), overlay, error))
+			if (!ports::writePng(overlayPath(s, stem, frame), overlay, error))
 				return false;
+		}
+		if (jsonl.isOpen()) {
+			apps::JsonFrame record;
+			record.frame = frame;
+			record.method = entry.name;
+			const std::string file = s.input->file(frame);
+			record.file = file.c_str();
+			record.width = image.width;
+			record.height = image.height;
+			record.ms = st.ok() ? method->lastStats().msTotal : 0.0;
+			writeJsonFrame(jsonl.get(), record, st.ok() ? dets : Detections());
 		}
 		out.detections.push_back(std::move(boxes));
 		out.frames = frame;
@@ -137,6 +152,8 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 		error = "no frames to process";
 		return false;
 	}
+	if (!jsonl.close(error))
+		return false;
 
 	if (c.frames > 0) {
 		const double n = static_cast<double>(c.frames);

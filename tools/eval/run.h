@@ -52,14 +52,13 @@ struct RunResult {
 struct RunSettings {
 	const FrameInput *input = nullptr;
 	const Model *model = nullptr;
-	std::string calibrationPath;
+	apps::DetectorOptions options; // --calib, --resize-at, --levels; the resize is the run's
+	std::string framesJsonlDir;    // empty = none
 	// Overlays: written by the run itself, which holds the frames.
 	const GroundTruth *truth = nullptr;
 	std::string overlayDir; // empty = none
 	std::vector<long> overlayFrames;
 	double overlayScore = 0;
-	bool resizeInPyramid = false;
-	bool calibratedPyramid = false;
 	bool quiet = false;
 };
 

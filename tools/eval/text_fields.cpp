@@ -5,7 +5,8 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "../detect/file_io.h"
+#include "args.h"
+#include "file_io.h"
 
 namespace calped::eval_tool {
 
@@ -40,15 +41,9 @@ std::vector<std::string> splitCsvLine(const std::string &line)
 
 bool parseDouble(const std::string &text, double &out)
 {
-	if (text.empty())
-		return false;
-	errno = 0;
-	char *end = nullptr;
-	const double v = std::strtod(text.c_str(), &end);
-	if (*end != '\0' || errno == ERANGE || !std::isfinite(v))
-		return false;
-	out = v;
-	return true;
+	// Leading space is allowed in the data files (strtod's rule), not on command lines.
+	const size_t start = text.find_first_not_of(" \t\n\r\f\v");
+	return start != std::string::npos && apps::parseNumber(text.substr(start), out);
 }
 
 bool parseLong(const std::string &text, long &out)
@@ -73,15 +68,6 @@ std::string printable(const std::string &text, size_t max)
 std::string lineError(const std::string &path, long line, const std::string &message)
 {
 	return path + ":" + std::to_string(line) + ": " + message;
-}
-
-bool readTextFile(const std::string &path, std::string &out, std::string &error)
-{
-	std::vector<uint8_t> bytes;
-	if (!detect_tool::readFile(path, bytes, error))
-		return false;
-	out.assign(bytes.begin(), bytes.end());
-	return true;
 }
 
 } // namespace calped::eval_tool

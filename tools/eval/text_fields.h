@@ -3,6 +3,8 @@
 // a field is a number only if all of it is, so "12a" or "" is an error, never a 12 or 0.
 #pragma once
 
+#include "file_io.h"
+
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,7 +32,7 @@ bool forEachLine(const std::string &path, std::string &error, F onLine);
 template <typename F>
 bool forEachLineIn(std::string_view text, F onLine);
 
-bool readTextFile(const std::string &path, std::string &out, std::string &error);
+using apps::readTextFile;
 
 template <typename F>
 bool forEachLineIn(std::string_view text, F onLine)

@@ -6,7 +6,9 @@
 
 #include "image_io.h"
 
-namespace calped::detect_tool {
+namespace calped::apps {
+
+using ports::RgbImage;
 
 // Draws an axis-aligned rectangle outline `thickness` pixels wide, inside the box,
 // clipped to the image. Boxes entirely outside leave the image unchanged.
@@ -16,4 +18,4 @@ void drawRectangle(RgbImage &image, float x, float y, float w, float h, int thic
 // The frame with every detection as a 2-pixel green rectangle.
 RgbImage renderOverlay(const RgbImage &frame, const Detections &detections);
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

@@ -3,7 +3,7 @@
 
 #include <cstring>
 
-namespace calped::detect_tool {
+namespace calped::ports {
 
 namespace {
 
@@ -281,4 +281,4 @@ bool safeForStb(const uint8_t *data, size_t size, std::string &reason)
 	return true;
 }
 
-} // namespace calped::detect_tool
+} // namespace calped::ports

@@ -3,11 +3,14 @@
 #pragma once
 
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <string>
 
-namespace calped {
+#include <calped/status.h>
+
+namespace calped::apps {
 
 constexpr int kExitRuntime = 1;
 constexpr int kExitUsage = 2;
@@ -21,6 +24,16 @@ inline int cliFail(const char *program, int code, std::string message)
 			c = ' ';
 	std::fprintf(stderr, "%s: %s\n", program, message.c_str());
 	return code;
+}
+
+// A Status message without its "ErrorCode: " prefix, for one-line errors.
+inline std::string statusText(const Status &st)
+{
+	const char *text = st.message();
+	const char *code = errorCodeName(st.code());
+	const size_t n = std::strlen(code);
+	return std::strncmp(text, code, n) == 0 && text[n] == ':' && text[n + 1] == ' ' ? text + n + 2
+											: text;
 }
 
 // Runs body() and turns an exception escaping it (out of memory, an internal error) into
@@ -37,4 +50,4 @@ int runGuarded(const char *program, Body body)
 	}
 }
 
-} // namespace calped
+} // namespace calped::apps

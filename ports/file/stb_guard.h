@@ -19,10 +19,10 @@
 #include <cstdint>
 #include <string>
 
-namespace calped::detect_tool {
+namespace calped::ports {
 
 // False, with a reason, for bytes stb must not be given; true for anything else
 // (including files stb will reject by itself).
 bool safeForStb(const uint8_t *data, size_t size, std::string &reason);
 
-} // namespace calped::detect_tool
+} // namespace calped::ports

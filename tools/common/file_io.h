@@ -6,13 +6,20 @@
 #include <string>
 #include <vector>
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 // Reads a whole file into memory. `what` names the file's role in the error ("model ").
 bool readFile(const std::string &path, std::vector<uint8_t> &out, std::string &error,
 	      const std::string &what = "");
 
+// The same as text, and writing a whole text file ("-" is not special).
+bool readTextFile(const std::string &path, std::string &out, std::string &error);
+bool writeTextFile(const std::string &path, const std::string &text, std::string &error);
+
+// True for an existing regular file (symlinks followed).
+bool isRegularFile(const std::string &path);
+
 // Creates a folder and its parents if missing.
 bool makeDirectories(const std::string &path, std::string &error);
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

@@ -8,7 +8,7 @@
 
 #include <calped/detector.h>
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 class OutputFile
 {
@@ -31,15 +31,17 @@ private:
 	bool isStdout_ = false;
 };
 
-// CSV: header "frame,x,y,w,h,score", one row per detection.
+// CSV: header "frame,x,y,w,h,score,ground_x,ground_y,world_height", one row per
+// detection; the three world fields are empty without a calibration (docs/cli.md).
 void writeCsvHeader(FILE *f);
 void writeCsvRows(FILE *f, long frame, const Detections &detections);
 
-// One JSON object per frame on one line.
-void writeJsonlFrame(FILE *f, long frame, const std::string &file, double ms,
-		     const Detections &detections);
+// MOTChallenge detections (det.txt): "frame,-1,x,y,w,h,score,ground_x,ground_y,world_height"
+// without a header; the world fields are -1 without a calibration.
+void writeMotRows(FILE *f, long frame, const Detections &detections);
 
-// JSON string literal for `text`, quotes included.
-std::string jsonString(const std::string &text);
+// The overlay image name of a frame, the same in every program: "000042.png" (six digits
+// at least).
+std::string overlayFileName(long long frame);
 
-} // namespace calped::detect_tool
+} // namespace calped::apps

@@ -5,17 +5,23 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <sys/stat.h>
 
-#include "file_io.h"
 #include "stb_guard.h"
 
 // Debian's libstb ships the compiled implementations; elsewhere stb_impl.cpp provides them.
 #include <stb_image.h>
 #include <stb_image_write.h>
 
-namespace calped::detect_tool {
+namespace calped {
+namespace ports {
+
 
 namespace {
+
+struct FileCloser {
+	void operator()(FILE *f) const { std::fclose(f); }
+};
 
 struct StbiFree {
 	void operator()(stbi_uc *p) const { stbi_image_free(p); }
@@ -82,33 +88,45 @@ bool checkSize(int width, int height, long maxPixels, const std::string &path, s
 
 } // namespace
 
-bool probeImage(const std::string &path, int &width, int &height, std::string &error)
+bool readFileBytes(const std::string &path, std::vector<uint8_t> &out, std::string &error,
+		   const std::string &what)
 {
-	// The whole file: stb reads a JPEG's tables while reading its header.
-	std::vector<uint8_t> bytes;
-	if (!readFile(path, bytes, error))
-		return false;
-	if (!checkBytes(bytes.data(), bytes.size(), path, error))
-		return false;
-	int comp = 0;
-	if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
-				   &comp)) {
-		error = "cannot decode " + path + ": " + stbReason();
+	out.clear();
+	// stat(), not std::filesystem: a path object would allocate on every frame.
+	struct stat st;
+	if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+		error = "cannot read " + what + path + ": is a directory";
 		return false;
 	}
-	return checkSize(width, height, kMaxImagePixels, path, error);
-}
-
-bool decodeImage(const std::string &path, RgbImage &out, std::string &error)
-{
-	std::vector<uint8_t> bytes;
-	if (!readFile(path, bytes, error))
+	std::unique_ptr<FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
+	if (!f) {
+		error = "cannot read " + what + path + ": " + std::strerror(errno);
 		return false;
-	return decodeImageBytes(bytes.data(), bytes.size(), path, out, error);
+	}
+	// In chunks rather than trusting a size from seeking (works for pipes too); the
+	// vector keeps its capacity from the last file.
+	uint8_t chunk[1 << 16];
+	for (;;) {
+		const size_t n = std::fread(chunk, 1, sizeof(chunk), f.get());
+		out.insert(out.end(), chunk, chunk + n);
+		if (n < sizeof(chunk))
+			break;
+	}
+	if (std::ferror(f.get())) {
+		error = "cannot read " + what + path + ": " + std::strerror(errno);
+		out.clear();
+		return false;
+	}
+	return true;
 }
 
-bool decodeImageBytes(const uint8_t *bytes, size_t size, const std::string &path, RgbImage &out,
-		      std::string &error, long maxPixels)
+namespace {
+
+// Checks, decodes and converts to RGB8 into `pixels` (at least `capacity` bytes, or grown
+// when `grow` is given).
+bool decodeBytes(const uint8_t *bytes, size_t size, const std::string &path, long maxPixels,
+		 std::vector<uint8_t> *grow, uint8_t *pixels, size_t capacity, int &width,
+		 int &height, std::string &error)
 {
 	if (!checkBytes(bytes, size, path, error))
 		return false;
@@ -133,14 +151,21 @@ bool decodeImageBytes(const uint8_t *bytes, size_t size, const std::string &path
 			error = "cannot decode " + path + ": " + std::to_string(comp) + " channels";
 		return false;
 	}
-	const size_t pixels = static_cast<size_t>(w) * static_cast<size_t>(h);
-	out.width = w;
-	out.height = h;
-	out.pixels.resize(pixels * 3);
+	const size_t count = static_cast<size_t>(w) * static_cast<size_t>(h);
+	if (grow) {
+		if (grow->size() != count * 3)
+			grow->resize(count * 3); // keeps the capacity of a larger earlier frame
+		pixels = grow->data();
+	} else if (count * 3 > capacity) {
+		// The file changed since it was probed.
+		error = "cannot decode " + path + ": " + std::to_string(w) + "x" + std::to_string(h) +
+			" is larger than the frame buffer (did the file change since it was probed?)";
+		return false;
+	}
 	// Grey (1), grey + alpha (2), RGB (3), RGBA (4): grey is expanded, alpha dropped.
 	const stbi_uc *in = data.get();
-	uint8_t *rgb = out.pixels.data();
-	for (size_t i = 0; i < pixels; i++, in += comp, rgb += 3) {
+	uint8_t *rgb = pixels;
+	for (size_t i = 0; i < count; i++, in += comp, rgb += 3) {
 		if (comp < 3) {
 			rgb[0] = rgb[1] = rgb[2] = in[0];
 		} else {
@@ -149,7 +174,60 @@ bool decodeImageBytes(const uint8_t *bytes, size_t size, const std::string &path
 			rgb[2] = in[2];
 		}
 	}
+	width = w;
+	height = h;
 	return true;
+}
+
+} // namespace
+
+bool ImageDecoder::probe(const std::string &path, int &width, int &height, std::string &error)
+{
+	if (!readFileBytes(path, bytes_, error))
+		return false;
+	if (!checkBytes(bytes_.data(), bytes_.size(), path, error))
+		return false;
+	int comp = 0;
+	if (!stbi_info_from_memory(bytes_.data(), static_cast<int>(bytes_.size()), &width, &height,
+				   &comp)) {
+		error = "cannot decode " + path + ": " + stbReason();
+		return false;
+	}
+	return checkSize(width, height, kMaxImagePixels, path, error);
+}
+
+bool ImageDecoder::decode(const std::string &path, RgbImage &out, std::string &error)
+{
+	if (!readFileBytes(path, bytes_, error))
+		return false;
+	return decodeBytes(bytes_.data(), bytes_.size(), path, kMaxImagePixels, &out.pixels, nullptr,
+			   0, out.width, out.height, error);
+}
+
+bool ImageDecoder::decodeInto(const std::string &path, uint8_t *pixels, size_t capacity,
+			      int &width, int &height, std::string &error)
+{
+	if (!readFileBytes(path, bytes_, error))
+		return false;
+	return decodeBytes(bytes_.data(), bytes_.size(), path, kMaxImagePixels, nullptr, pixels,
+			   capacity, width, height, error);
+}
+
+bool probeImage(const std::string &path, int &width, int &height, std::string &error)
+{
+	return ImageDecoder().probe(path, width, height, error);
+}
+
+bool decodeImage(const std::string &path, RgbImage &out, std::string &error)
+{
+	return ImageDecoder().decode(path, out, error);
+}
+
+bool decodeImageBytes(const uint8_t *bytes, size_t size, const std::string &path, RgbImage &out,
+		      std::string &error, long maxPixels)
+{
+	return decodeBytes(bytes, size, path, maxPixels, &out.pixels, nullptr, 0, out.width,
+			   out.height, error);
 }
 
 bool writePng(const std::string &path, const RgbImage &image, std::string &error)
@@ -162,4 +240,5 @@ bool writePng(const std::string &path, const RgbImage &image, std::string &error
 	return true;
 }
 
-} // namespace calped::detect_tool
+} // namespace ports
+} // namespace calped

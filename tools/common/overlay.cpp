@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace calped::detect_tool {
+namespace calped::apps {
 
 namespace {
 
@@ -59,4 +59,4 @@ RgbImage renderOverlay(const RgbImage &frame, const Detections &detections)
 	return out;
 }
 
-} // namespace calped::detect_tool
+} // namespace calped::apps
