@@ -116,6 +116,21 @@ Status readFile(const char *path, std::vector<char> &out)
 	return Status::success();
 }
 
+// The *_load_file functions: the arguments checked, the file read, then `load(bytes)`.
+template <typename Handle, typename Load>
+calped_status loadFile(const char *function, const char *path, Handle **out, calped_error *err, Load &&load)
+{
+	return guarded(err, [&] {
+		if (out)
+			*out = nullptr;
+		if (!path || !out)
+			return fail(err, Status::error(ErrorCode::InvalidArgument, "%s: path and out must not be NULL", function));
+		std::vector<char> bytes;
+		const Status st = readFile(path, bytes);
+		return st.ok() ? load(bytes) : fail(err, st);
+	});
+}
+
 calped_status loadModel(const void *data, size_t size, calped_model **out, calped_error *err)
 {
 	if (!data && size > 0)
@@ -250,15 +265,7 @@ const char *calped_version(void)
 
 calped_status calped_model_load_file(const char *path, calped_model **out, calped_error *err)
 {
-	return guarded(err, [&] {
-		if (out)
-			*out = nullptr;
-		if (!path || !out)
-			return fail(err, ErrorCode::InvalidArgument, "calped_model_load_file: path and out must not be NULL");
-		std::vector<char> bytes;
-		const Status st = readFile(path, bytes);
-		if (!st.ok())
-			return fail(err, st);
+	return loadFile("calped_model_load_file", path, out, err, [&](const std::vector<char> &bytes) {
 		return loadModel(bytes.data(), bytes.size(), out, err);
 	});
 }
@@ -285,15 +292,7 @@ void calped_model_free(calped_model *model)
 
 calped_status calped_camera_load_file(const char *path, calped_camera **out, calped_error *err)
 {
-	return guarded(err, [&] {
-		if (out)
-			*out = nullptr;
-		if (!path || !out)
-			return fail(err, ErrorCode::InvalidArgument, "calped_camera_load_file: path and out must not be NULL");
-		std::vector<char> bytes;
-		const Status st = readFile(path, bytes);
-		if (!st.ok())
-			return fail(err, st);
+	return loadFile("calped_camera_load_file", path, out, err, [&](const std::vector<char> &bytes) {
 		return loadCamera(bytes.data(), bytes.size(), path, out, err);
 	});
 }
