@@ -55,7 +55,7 @@ calped_status fail(calped_error *err, const Status &st)
 {
 	const calped_status code = static_cast<calped_status>(st.code());
 	if (err) {
-		err->code = code;
+		err->code = int(code);
 		std::snprintf(err->message, sizeof(err->message), "%s", st.message());
 	}
 	return code;
@@ -217,7 +217,7 @@ Status toCpp(const calped_config *c, const calped_camera *camera, calped::Detect
 }
 
 // Stride 0: tightly packed rows of the plane.
-int packedStride(calped_pixel_format format, int plane, int width)
+int packedStride(int format, int plane, int width)
 {
 	const int chroma = (width + 1) / 2;
 	switch (format) {
@@ -249,7 +249,7 @@ calped::ImageView toView(const calped_image &im)
 
 extern "C" {
 
-const char *calped_status_name(calped_status code)
+const char *calped_status_name(int code)
 {
 	if (code == CALPED_ERR_INTERNAL)
 		return "Internal";
@@ -333,11 +333,11 @@ void calped_config_defaults(calped_config *config)
 	config->max_width = d.maxWidth;
 	config->max_height = d.maxHeight;
 	config->resize = d.resize;
-	config->resize_at = static_cast<calped_resize_at>(d.resizeAt);
+	config->resize_at = int(d.resizeAt);
 	config->max_candidates = d.maxCandidates;
 	config->cascade_threshold = d.cascadeThreshold;
 	config->nms = d.nms;
-	config->method = static_cast<calped_method>(d.method);
+	config->method = int(d.method);
 	config->min_person_height = s.minPersonHeight;
 	config->max_person_height = s.maxPersonHeight;
 	config->sparse_dense = s.sparseDense;
@@ -345,7 +345,7 @@ void calped_config_defaults(calped_config *config)
 	config->max_dense_regions = s.maxDenseRegions;
 	config->score_ratio = s.scoreRatio;
 	config->box_voting = s.boxVoting;
-	config->levels = static_cast<calped_levels>(s.levels);
+	config->levels = int(s.levels);
 	config->placed_level_reach = s.placedLevelReach;
 	config->static_rejection = d.staticRejection.has_value();
 	config->static_difference = r.difference;

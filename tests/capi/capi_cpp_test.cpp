@@ -58,7 +58,7 @@ TEST(CApi, DefaultsAreTheCppDefaults)
 TEST(CApi, StatusCodesAreTheErrorCodes)
 {
 	for (int code = 0; code <= int(ErrorCode::EndOfStream); code++)
-		EXPECT_STREQ(calped_status_name(calped_status(code)), errorCodeName(ErrorCode(code)));
+		EXPECT_STREQ(calped_status_name(code), errorCodeName(ErrorCode(code)));
 }
 
 TEST(CApi, ConfigErrorsAreTheCppMessages)
@@ -104,8 +104,8 @@ void expectSameAsCpp(const Model &model, const calped_model *cmodel, const Camer
 	}
 	im.width = view.width;
 	im.height = view.height;
-	im.format = calped_pixel_format(view.format);
-	im.yuv = calped_yuv_encoding(view.yuv);
+	im.format = int(view.format);
+	im.yuv = int(view.yuv);
 	const calped_detection *got = nullptr;
 	int count = 0;
 	ASSERT_EQ(calped_detect(det, &im, &got, &count, &err), CALPED_OK) << what << ": " << err.message;

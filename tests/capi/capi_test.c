@@ -33,7 +33,7 @@ static void expect_error(calped_status got, const calped_error *err, calped_stat
 			 const char *what)
 {
 	printf("  %-34s -> %s: %s\n", what, calped_status_name(got), err->message);
-	if (got != code || err->code != code) {
+	if (got != code || err->code != (int)code) {
 		fprintf(stderr, "%s: expected %s, got %s\n", what, calped_status_name(code), calped_status_name(got));
 		failures++;
 	}
@@ -124,7 +124,7 @@ static void test_version_and_names(void)
 	CHECK(strcmp(calped_status_name(CALPED_ERR_MODEL_CHECKSUM), "ModelChecksum") == 0);
 	CHECK(strcmp(calped_status_name(CALPED_ERR_END_OF_STREAM), "EndOfStream") == 0);
 	CHECK(strcmp(calped_status_name(CALPED_ERR_INTERNAL), "Internal") == 0);
-	CHECK(strcmp(calped_status_name((calped_status)55), "Unknown") == 0);
+	CHECK(strcmp(calped_status_name(55), "Unknown") == 0);
 }
 
 static void test_load_errors(const char *model_path)
@@ -182,7 +182,7 @@ static void test_config(const calped_model *model)
 	calped_config_defaults(&cfg);
 	CHECK(cfg.struct_size == sizeof(calped_config));
 	CHECK(cfg.method == CALPED_METHOD_AUTO && cfg.resize == 1.0 && isnan(cfg.cascade_threshold));
-	CHECK(calped_config_validate(&cfg, NULL, &err) == CALPED_OK && err.code == CALPED_OK);
+	CHECK(calped_config_validate(&cfg, NULL, &err) == CALPED_OK && err.code == (int)CALPED_OK);
 
 	cfg.max_candidates = 0;
 	st = calped_detector_create(model, NULL, &cfg, &det, &err);
@@ -253,7 +253,7 @@ static void test_frame_errors(const calped_model *model)
 	st = calped_detect(det, &im, &dets, &count, &err);
 	expect_error(st, &err, CALPED_ERR_IMAGE_EMPTY, "NV12", "NV12 without its UV plane");
 
-	im.format = (calped_pixel_format)42;
+	im.format = 42;
 	st = calped_detect(det, &im, &dets, &count, &err);
 	expect_error(st, &err, CALPED_ERR_UNSUPPORTED_PIXEL_FORMAT, "UnsupportedPixelFormat", "unknown pixel format");
 
@@ -337,7 +337,7 @@ static int test_pets(const char *model_path)
 		CHECK(calped_detector_create(model, calibrated ? camera : NULL, &cfg, &det, &err) == CALPED_OK);
 		if (!det)
 			break;
-		CHECK(calped_detector_method(det) == cfg.method);
+		CHECK((int)calped_detector_method(det) == cfg.method);
 		{
 			calped_image im;
 			memset(&im, 0, sizeof(im));

@@ -72,13 +72,13 @@ typedef enum calped_status {
 
 /* The error of one call: the code and its message (always NUL-terminated). */
 typedef struct calped_error {
-	calped_status code;
+	int code; /* a calped_status */
 	char message[256];
 } calped_error;
 
 /* Name of a status code, e.g. "ModelChecksum" (the C++ errorCodeName), "Internal" for
  * CALPED_ERR_INTERNAL, "Unknown" for a value that is none of them. Never NULL; static. */
-CALPED_C_EXPORT const char *calped_status_name(calped_status code);
+CALPED_C_EXPORT const char *calped_status_name(int code);
 
 /* The library's version, CALPED_VERSION of the build (e.g. "0.1.0"); static. Compare
  * with the header's CALPED_VERSION to detect a library from another release. */
@@ -157,7 +157,9 @@ typedef enum calped_levels {
 } calped_levels;
 
 /* calped::DetectorConfig flattened; calped/detector.h documents each setting and
- * calped_config_defaults fills the C++ defaults. Boolean settings are int, 0 or not.
+ * calped_config_defaults fills the C++ defaults. Boolean settings are int, 0 or not;
+ * enumerated ones are int too (the enum named), so that any value a caller stores is
+ * well defined and refused when it is none of the enum's (here and in calped_image).
  * The calibrated_* settings are the C++ CalibratedSettings: they are used when the
  * calibrated method runs; with the generic method they must keep their defaults (as the
  * C++ API refuses calibrated settings there). Error messages name the C++ fields
@@ -169,12 +171,12 @@ typedef struct calped_config {
 	/* Largest input frame, 1..16384 (default 1920 x 1080). With a camera, every frame
 	 * must be exactly this size. */
 	int max_width, max_height;
-	double resize;              /* (0, 8], default 1 */
-	calped_resize_at resize_at; /* default CALPED_RESIZE_AT_PYRAMID */
-	int max_candidates;         /* 1..2^24, default 65536 */
-	float cascade_threshold;    /* NaN (default): the model's */
-	int nms;                    /* default 1 */
-	calped_method method;       /* default CALPED_METHOD_AUTO */
+	double resize;           /* (0, 8], default 1 */
+	int resize_at;           /* a calped_resize_at, default CALPED_RESIZE_AT_PYRAMID */
+	int max_candidates;      /* 1..2^24, default 65536 */
+	float cascade_threshold; /* NaN (default): the model's */
+	int nms;                 /* default 1 */
+	int method;              /* a calped_method, default CALPED_METHOD_AUTO */
 	/* Calibrated settings (calped::CalibratedSettings). */
 	double min_person_height, max_person_height; /* metres, default 1.4 and 2.2 */
 	int sparse_dense;                            /* default 1 */
@@ -182,7 +184,7 @@ typedef struct calped_config {
 	int max_dense_regions;                       /* default 256 */
 	int score_ratio;                             /* default 1 */
 	int box_voting;                              /* default 1 */
-	calped_levels levels;                        /* default CALPED_LEVELS_PLACED */
+	int levels;                                  /* a calped_levels, default PLACED */
 	int placed_level_reach;                      /* 1..16, default 5 */
 	/* Static-scene rejection (calped::StaticRejection), off by default. */
 	int static_rejection;
@@ -237,8 +239,8 @@ typedef struct calped_image {
 	const uint8_t *planes[3];
 	int strides[3];
 	int width, height;
-	calped_pixel_format format;
-	calped_yuv_encoding yuv; /* default (0): BT.601 limited range */
+	int format; /* a calped_pixel_format */
+	int yuv;    /* a calped_yuv_encoding; 0 (default): BT.601 limited range */
 } calped_image;
 
 /* ---- Detector ---------------------------------------------------------------------- */
