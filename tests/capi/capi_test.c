@@ -2,15 +2,15 @@
 /*
  * The C API from C (compiled as C99): versions, error paths and their messages, and a
  * PETS frame whose detections must equal, to the last printed digit, those of the C++ API
- * for the same frame and configuration (printed by the C++ helper capi_reference).
- *   capi_test HELPER WORKDIR
+ * for the same frame and configuration (printed by tests/capi/reference.cpp, linked in).
+ *   capi_test WORKDIR
  * Environment (tests/meson.build): CALPED_SHARED_DIR (for View_001.xml) and what the
- * helper needs. Exit 0: all passed; 1: a check failed; 77: passed, but the PETS
+ * reference needs. Exit 0: all passed; 1: a check failed; 77: passed, but the PETS
  * comparison was skipped (no ../shared, model or frames; the reason is printed).
  */
-#define _POSIX_C_SOURCE 200809L /* popen */
-
 #include <calped/calped_c.h>
+
+#include "reference.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -18,7 +18,7 @@
 #include <string.h>
 
 static int failures = 0;
-static const char *helper, *workdir;
+static const char *workdir;
 
 #define CHECK(cond)                                                                        \
 	do {                                                                               \
@@ -75,27 +75,7 @@ static char *read_all(const char *path, size_t *size)
 	return data;
 }
 
-/* Runs the helper; its first output line (newline removed) in `line`. Returns its exit
- * status (77: the input is not there). */
-static int run_helper(const char *args, char *line, size_t size)
-{
-	char cmd[2048];
-	FILE *p;
-	int rc;
-	snprintf(cmd, sizeof(cmd), "'%s' %s", helper, args);
-	p = popen(cmd, "r");
-	if (!p)
-		return -1;
-	line[0] = 0;
-	if (fgets(line, (int)size, p))
-		line[strcspn(line, "\n")] = 0;
-	while (fgetc(p) != EOF) {
-	}
-	rc = pclose(p);
-	return rc == -1 ? -1 : (rc >> 8) & 0xff;
-}
-
-/* A binary PPM (P6, 255), as the helper writes it. */
+/* A binary PPM (P6, 255), as capi_reference_pets_frame writes it. */
 static unsigned char *read_ppm(const char *path, int *width, int *height)
 {
 	size_t size = 0;
@@ -271,7 +251,7 @@ static void test_frame_errors(const calped_model *model)
 	free(pixels);
 }
 
-/* Detections on PETS frame 1, printed as the helper prints the C++ API's. */
+/* Detections printed as capi_reference_detect prints the C++ API's. */
 static int print_detections(const calped_detection *d, int count, char *out, size_t size)
 {
 	size_t used = 0;
@@ -287,7 +267,7 @@ static int print_detections(const calped_detection *d, int count, char *out, siz
 /* 1: compared (failures counted); 0: skipped (reason printed). */
 static int test_pets(const char *model_path)
 {
-	char line[1024], ppm[1024], calib[1024], args[4096], *ours, *theirs;
+	char ppm[1024], calib[1024], *ours, *theirs;
 	const char *shared = getenv("CALPED_SHARED_DIR");
 	calped_model *model = NULL;
 	calped_camera *camera = NULL;
@@ -298,13 +278,11 @@ static int test_pets(const char *model_path)
 	const calped_detection *dets = NULL;
 	int count = 0, width = 0, height = 0, run;
 	unsigned char *rgb;
-	size_t size = 0;
 	FILE *f;
 
 	printf("PETS frame 1, calibrated (resize 2), and generic\n");
 	snprintf(ppm, sizeof(ppm), "%s/capi-frame-000001.ppm", workdir);
-	snprintf(args, sizeof(args), "frame 1 '%s'", ppm);
-	if (run_helper(args, line, sizeof(line)) != 0) {
+	if (capi_reference_pets_frame(1, ppm) != 0) {
 		printf("SKIP: PETS frame 1 is not there (scripts/fetch-pets.sh 50)\n");
 		return 0;
 	}
@@ -322,8 +300,8 @@ static int test_pets(const char *model_path)
 	CHECK(calped_model_load_file(model_path, &model, &err) == CALPED_OK);
 	CHECK(calped_camera_load_file(calib, &camera, &err) == CALPED_OK);
 	ours = malloc(1 << 16);
-	theirs = NULL;
-	for (run = 0; run < 2 && model && camera && ours; run++) {
+	theirs = malloc(1 << 16);
+	for (run = 0; run < 2 && model && camera && ours && theirs; run++) {
 		const int calibrated = run == 0;
 		calped_config_defaults(&cfg);
 		cfg.max_width = width;
@@ -355,18 +333,12 @@ static int test_pets(const char *model_path)
 		if (count > 0)
 			CHECK(calibrated ? !isnan(dets[0].world_height) : isnan(dets[0].world_height));
 
-		snprintf(args, sizeof(args), "detect '%s' '%s' %s%s%s > '%s/capi-reference.txt'", model_path, ppm,
-			 calibrated ? "--resize 2 --method calibrated --camera '" : "--method generic",
-			 calibrated ? calib : "", calibrated ? "'" : "", workdir);
-		CHECK(run_helper(args, line, sizeof(line)) == 0);
-		snprintf(args, sizeof(args), "%s/capi-reference.txt", workdir);
-		theirs = read_all(args, &size);
-		CHECK(theirs != NULL);
-		if (theirs && strcmp(ours, theirs) != 0) {
+		CHECK(capi_reference_detect(model_path, ppm, calibrated ? calib : NULL, cfg.resize, calibrated, theirs,
+					    1 << 16) == 0);
+		if (strcmp(ours, theirs) != 0) {
 			fprintf(stderr, "C API detections differ from the C++ API's:\n--- C\n%s--- C++\n%s", ours, theirs);
 			failures++;
 		}
-		free(theirs);
 		calped_detector_free(det);
 		det = NULL;
 	}
@@ -391,30 +363,29 @@ static int test_pets(const char *model_path)
 		calped_detector_free(det);
 	}
 	free(ours);
+	free(theirs);
 	free(rgb);
 	return 1;
 }
 
 int main(int argc, char **argv)
 {
-	char model_path[1024], synthetic[1024], args[2048];
+	char model_path[1024], synthetic[1024];
 	calped_model *model = NULL;
 	calped_error err;
 	int compared = 0;
 
-	if (argc != 3) {
-		fprintf(stderr, "usage: capi_test HELPER WORKDIR\n");
+	if (argc != 2) {
+		fprintf(stderr, "usage: capi_test WORKDIR\n");
 		return 2;
 	}
-	helper = argv[1];
-	workdir = argv[2];
+	workdir = argv[1];
 
 	test_version_and_names();
 
 	/* The error paths need a model, not a trained one: a small synthetic blob. */
 	snprintf(synthetic, sizeof(synthetic), "%s/capi-synthetic.cpm", workdir);
-	snprintf(args, sizeof(args), "synthetic-model '%s'", synthetic);
-	CHECK(run_helper(args, model_path, sizeof(model_path)) == 0);
+	CHECK(capi_reference_synthetic_model(synthetic) == 0);
 	test_load_errors(synthetic);
 	CHECK(calped_model_load_file(synthetic, &model, &err) == CALPED_OK);
 	if (model) {
@@ -423,7 +394,7 @@ int main(int argc, char **argv)
 		calped_model_free(model);
 	}
 
-	if (run_helper("model", model_path, sizeof(model_path)) == 0)
+	if (capi_reference_inria_model(model_path, sizeof(model_path)) == 0)
 		compared = test_pets(model_path);
 	else
 		printf("SKIP: no INRIA model (../shared/models or calped-convert missing)\n");
