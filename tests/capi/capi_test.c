@@ -342,9 +342,14 @@ static int test_pets(const char *model_path)
 		calped_detector_free(det);
 		det = NULL;
 	}
-	/* The detector copies the model and camera: freed first, it still runs. */
+	/* With a camera, the detector and every frame are the calibration's size. */
 	if (model && camera) {
 		calped_config_defaults(&cfg);
+		cfg.max_width = 640;
+		cfg.max_height = 480;
+		expect_error(calped_detector_create(model, camera, &cfg, &det, &err), &err, CALPED_ERR_INVALID_ARGUMENT,
+			     "768x576", "camera: detector of another size");
+		/* The detector copies the model and camera: freed first, it still runs. */
 		cfg.max_width = width;
 		cfg.max_height = height;
 		cfg.resize = 2.0;
@@ -356,6 +361,11 @@ static int test_pets(const char *model_path)
 		calped_image im;
 		memset(&im, 0, sizeof(im));
 		im.planes[0] = rgb;
+		im.strides[0] = 3 * width;
+		im.width = 640; /* a crop: not the calibration's size */
+		im.height = 480;
+		expect_error(calped_detect(det, &im, &dets, &count, &err), &err, CALPED_ERR_INVALID_ARGUMENT,
+			     "768x576 frames, got 640x480", "camera: frame of another size");
 		im.width = width;
 		im.height = height;
 		CHECK(calped_detect(det, &im, &dets, &count, &err) == CALPED_OK);

@@ -215,6 +215,8 @@ def test_pets_frame_equals_cpp(pets):
     model.close()
     camera.close()  # the detector holds copies
     assert det.method == "calibrated"
+    with pytest.raises(calped.InvalidArgumentError, match="768x576 frames, got 640x480"):
+        det.detect(rgb[:480, :640])
     found = det.detect(rgb)
     want = reference(model_path, ppm, "--camera", CALIB, "--resize", 2, "--method", "calibrated")
     assert len(found) > 0
