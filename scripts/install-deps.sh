@@ -15,6 +15,9 @@ packages=(
 	libmatio-dev
 	libstb-dev
 	libgtest-dev
+	# the Python binding's tests (tests/python)
+	python3-numpy
+	python3-pytest
 	libexpat1-dev
 	ffmpeg
 	gnuplot-nox

@@ -9,8 +9,9 @@
 # (scripts/fuzz.sh, build-fuzz/, clang-14), then cross-builds the suite for each of
 # $CALPED_CROSS (default aarch64; empty: none) and runs it under qemu-user
 # (scripts/cross-test.sh, build-aarch64/).
-# The last line is "N passed, N failed, N skipped", counting GoogleTest cases of all runs
-# and one case per fuzz target.
+# The last line is "N passed, N failed, N skipped", counting GoogleTest cases of all runs,
+# the Python binding's pytest cases (merged into Meson's junit log, tests/python) and one
+# case per fuzz target.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
