@@ -8,18 +8,13 @@
 #                             detection's ground position and world height
 #   out/main/overlays/        every 100th frame with the detections drawn
 #   out/main/summary.txt      the table printed at the end
-# (calped-detect's defaults with --calib: the calibrated method, resize inside the pyramid,
-# placed pyramid levels; plus --reject-static: PETS is a fixed camera; docs/calibrated.md).
-# Then the evaluation (docs/evaluation.md):
-# calped-eval runs the generic, calibrated and calibrated-static methods at resizes 1.5,
-# 2.0 and 2.5 against the ground truth, each frame resized first and with the toolbox's
-# octaves as the thesis does (--resize-at frame --levels toolbox), and writes
-#   docs/results.md           tables, plots and sample frames, machine, date and commit
-#   docs/results/             the plots, and the overlays it links (docs/results/<run>/)
-#   out/main/eval.json        one object per (method, resize); out/main/dets/ their CSVs
-# and again with the resize done inside the feature pyramid (--levels toolbox; tables in results.md,
-# out/main/eval_in_pyramid.json, out/main/dets_in_pyramid/), and the calibrated methods with
-# placed pyramid levels, the defaults (out/main/eval_placed.json, out/main/dets_placed/).
+#   out/main/score.json       its detections scored against the ground truth (calped-eval
+#                             --score-only: TPR, FPPF, log-average miss rate)
+# calped-detect runs with its defaults and a calibration (the calibrated method, resize
+# inside the pyramid, placed pyramid levels) at resize 2, with --reject-static: PETS is a
+# fixed camera (docs/calibrated.md). A few minutes on a fresh machine, most of it the build.
+# The long evaluation sweep (every method, resize and pyramid, docs/results.md) is
+# scripts/run-eval-sweep.sh.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -75,102 +70,17 @@ field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$summary"; }
 		"log" "$out/detect.log"
 } | tee "$out/summary.txt"
 
-# --- Evaluation -------------------------------------------------------------------------
-# Both modes; the calibrated one uses PETS view 1's Tsai calibration (calped-eval names and
-# skips it if that file is missing).
-eval_start=$SECONDS
-pets=${CALPED_SHARED_DIR:-../shared}/data/pets2009-s2l1
-gt=$pets/PETS2009-S2L1.xml
-calib=()
-if [[ -f $pets/View_001.xml ]]; then
-	calib=(--calib "$pets/View_001.xml")
-fi
-# The same frames as above, decoded by an ffmpeg pipe: identical pixels (ffmpeg made the PNGs)
-# for about 5 ms a frame where reading the PNGs back takes about 12, six runs over.
-input=(--frames "$frames")
-if [[ -s data/pets/vtest.avi ]]; then
-	input=(--video data/pets/vtest.avi)
-fi
-results=docs/results
-page=docs/results.md
-# Each (method, resize) runs in its own process, one at a time by default: runs side by side
-# share caches, memory bandwidth and (on small VMs) CPU time, and the ms/frame the table
-# reports grows with them. CALPED_EVAL_JOBS=N trades that for wall time.
-eval_jobs=${CALPED_EVAL_JOBS:-1}
-mkdir -p "$results" "$out/plots"
-find "$results" -maxdepth 2 -type f -name '*.png' -delete
-# First as the thesis does it: each frame resized, then the toolbox's octaves.
-ecmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
-	--methods generic,calibrated,calibrated-static --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
-	--resize-at frame --levels toolbox
-	--json "$out/eval.json" --dets "$out/dets" --plots "$results" --overlays "$results"
-	--overlay-frames 1,200,400,600 --markdown "$page.part")
-echo "run-main: ${ecmd[*]}"
-"${ecmd[@]}" | tee "$out/eval.txt"
-# The plots' data and gnuplot scripts are for redrawing, not for reading: keep them in out/.
-find "$results" -maxdepth 1 -type f \( -name '*.dat' -o -name '*.gp' \) -exec mv -t "$out/plots" {} +
-# The same runs with the resize done inside the feature pyramid (--resize-at pyramid, the
-# default: the toolbox's nOctUp), still with the toolbox's octaves: tables only.
-pcmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
-	--methods generic,calibrated,calibrated-static --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
-	--levels toolbox
-	--json "$out/eval_in_pyramid.json" --dets "$out/dets_in_pyramid" --markdown "$page.pyramid")
-echo "run-main: ${pcmd[*]}"
-"${pcmd[@]}" | tee "$out/eval_in_pyramid.txt"
-# And with the defaults: computed levels placed among the needed ones (--levels placed,
-# calibrated methods only), the resize inside the pyramid.
-lcmd=("$builddir"/tools/eval/calped-eval "${input[@]}" --gt "$gt" --model "$model" "${calib[@]}"
-	--methods calibrated,calibrated-static --resizes 1.5,2.0,2.5 --jobs "$eval_jobs"
-	--json "$out/eval_placed.json" --dets "$out/dets_placed" --markdown "$page.placed")
-echo "run-main: ${lcmd[*]}"
-"${lcmd[@]}" | tee "$out/eval_placed.txt"
-eval_wall=$((SECONDS - eval_start))
-
-commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [[ $commit != unknown ]] && ! git diff --quiet HEAD 2>/dev/null; then
-	commit="$commit (with uncommitted changes)"
-fi
-cpu=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
-{
-	echo "<!-- SPDX-License-Identifier: BSD-2-Clause -->"
-	echo "# Results: PETS 2009 S2L1"
-	echo
-	echo "Written by \`bash scripts/run-main.sh\` (do not edit by hand) on $(date -u '+%Y-%m-%d %H:%M UTC'),"
-	echo "commit \`$commit\`, on ${cpu:-an unknown CPU} with $(nproc) cores; runs at a time: $eval_jobs, each"
-	echo "on one thread. calped-eval took $eval_wall s of wall time for all its runs over all frames."
-	echo
-	cat "$page.part"
-	echo
-	echo "## Resize inside the pyramid"
-	echo
-	echo "The same runs with the resize inside the pyramid (\`--resize-at pyramid\`, the default) and the"
-	echo "toolbox's octaves (\`--levels toolbox\`): colour is converted at the frame's size and each"
-	echo "computed level resampled from it (the toolbox's nOctUp) instead of the frame being resized"
-	echo "first ([calibrated.md](calibrated.md#resize-inside-the-pyramid))."
-	echo
-	sed -e '/^Frames: /d' -e '/^### Plots/,$d' -e 's/^### /#### /' "$page.pyramid"
-	echo
-	echo "## Placed pyramid levels"
-	echo
-	echo "The calibrated methods with the defaults (resize inside the pyramid, \`--levels placed\`): channels"
-	echo "computed at levels placed among the needed ones instead of the toolbox's octaves"
-	echo "([calibrated.md](calibrated.md#placed-pyramid-levels)). Compare the ms/frame with the"
-	echo "generic mode of the first table."
-	echo
-	sed -e '/^Frames: /d' -e '/^### Plots/,$d' -e 's/^### /#### /' "$page.placed"
-} >"$page"
-rm -f "$page.part" "$page.pyramid" "$page.placed"
-
+# The result against the ground truth: the detections above, scored as calped-eval scores
+# its own runs (docs/evaluation.md).
+gt=${CALPED_SHARED_DIR:-../shared}/data/pets2009-s2l1/PETS2009-S2L1.xml
+scmd=("$builddir"/tools/eval/calped-eval --score-only "$out/detections.csv" --gt "$gt"
+	--frames "$frames" --label calibrated-static --json "$out/score.json")
+echo "run-main: ${scmd[*]}"
 {
 	echo
-	echo "evaluation (calped-eval, $eval_wall s wall time, runs at a time: $eval_jobs): $page, $out/eval.json"
-	cat "$out/eval.txt"
+	echo "against the ground truth ($gt):"
+	"${scmd[@]}"
 	echo
-	echo "resize inside the pyramid: $out/eval_in_pyramid.json"
-	cat "$out/eval_in_pyramid.txt"
-	echo
-	echo "placed pyramid levels: $out/eval_placed.json"
-	cat "$out/eval_placed.txt"
-	echo
-	echo "main job wall time: $((SECONDS - start)) s"
+	echo "main job wall time: $((SECONDS - start)) s; the full evaluation: bash scripts/run-eval-sweep.sh"
 } | tee -a "$out/summary.txt"
+
