@@ -19,13 +19,10 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 start=$SECONDS
-# CALPED_BUILD_DIR picks another build folder (setup-models.sh reads it too).
+# CALPED_BUILD_DIR picks another build folder.
 builddir=${CALPED_BUILD_DIR:-build}
 export CALPED_BUILD_DIR=$builddir
-bash scripts/install-deps.sh
-bash scripts/build.sh "$builddir" -Dbuildtype=release
-bash scripts/setup-models.sh
-bash scripts/fetch-pets.sh
+bash scripts/prepare-run.sh
 
 out=out/main
 model=models/AcfInriaDetector.cpm

@@ -1,26 +1,15 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include <calped/detector.h>
 
-#include <chrono>
 #include <cmath>
 #include <new>
 
+#include "core/stage_clock.h"
 #include "detect/detector_impl.h"
 #include "detect/world_coordinates.h"
 #include "search/generic_search.h"
 
 namespace calped {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t0)
-{
-	return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-} // namespace
 
 Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 {
@@ -106,13 +95,13 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	Status st = checkImage(image);
 	if (!st.ok())
 		return st;
-	const auto tStart = Clock::now();
+	const auto tStart = StageClock::now();
 
 	// Input: the frame as the camera gave it (the static scene reads it), then resized.
 	FrameInput &frame = input_.begin(image);
 	if (rejectStatic_)
 		static_.observe(frame); // its time counts as "other"
-	const auto tResize = Clock::now();
+	const auto tResize = StageClock::now();
 	st = input_.resize();
 	if (!st.ok())
 		return st;
@@ -134,7 +123,7 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	// Suppression, then the dense regions take the detections (before static rejection:
 	// a region around static structure stays, its windows are found again anyway; only
 	// the output drops it), then world coordinates.
-	const auto tNms = Clock::now();
+	const auto tNms = StageClock::now();
 	Detection *boxes = candidates_.data();
 	int kept = suppression_.run(boxes, candidates_.count());
 	if (calibrated_)

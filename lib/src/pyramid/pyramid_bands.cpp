@@ -73,7 +73,7 @@ void Pyramid::planRows(const CellRange *levelRows, int width, int height)
 
 Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 {
-	const auto t0 = Clock::now();
+	const auto t0 = StageClock::now();
 	const int width = input.width(), height = input.height();
 	if (!luv_[0].fits(width, height))
 		return Status::error(ErrorCode::ImageTooLarge,

@@ -58,12 +58,12 @@ LevelChannels Pyramid::prepareRect(int i, const CellRange *only, const CellRange
 	if (l.computed) {
 		realLevelPlanes(i, raw);
 	} else {
-		const auto t0 = Clock::now();
+		const auto t0 = StageClock::now();
 		approximate(i, band, cols, raw);
 		msApprox += msSince(t0);
 	}
 
-	const auto t0 = Clock::now();
+	const auto t0 = StageClock::now();
 	const int w = l.width, h = l.height;
 	const int pw = w + 2 * padW_, ph = h + 2 * padH_;
 	for (int c = 0; c < kChannelCount; c++) {

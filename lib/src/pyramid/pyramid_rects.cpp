@@ -42,7 +42,7 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 		const int c = l.source;
 		addMerged(needRects_[c], needCount_[c], kMaxRects, raw, gap);
 	}
-	const auto t0 = Clock::now();
+	const auto t0 = StageClock::now();
 	for (int i = 0; i < scales_.count; i++)
 		for (int k = 0; k < needCount_[i]; k++) {
 			const LevelRect &r = needRects_[i][k];

@@ -2,8 +2,7 @@
 // Small helpers the pyramid's files share.
 #pragma once
 
-#include <chrono>
-
+#include "core/stage_clock.h"
 #include "pyramid/pyramid.h"
 
 namespace calped {
@@ -17,13 +16,6 @@ inline int halfLevelOf(const ModelParams &p, const ScaleList &scales)
 		if (scales.levels[i].computed && scales.levels[i].scale == 0.5 && p.nApprox > 0)
 			return i;
 	return -1;
-}
-
-using Clock = std::chrono::steady_clock;
-
-inline double msSince(Clock::time_point t0)
-{
-	return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
 // Planes of one level's ten channels laid back to back in `base`.

@@ -2,23 +2,12 @@
 #include "search/calibrated_search.h"
 
 #include <algorithm>
-#include <chrono>
 #include <new>
 
+#include "core/stage_clock.h"
 #include "pyramid/placement.h"
 
 namespace calped {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t0)
-{
-	return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-} // namespace
 
 Status CalibratedSearch::init(const CameraModel &camera, const ModelParams &params,
 			      const CalibratedSettings &settings, const WindowBoxes &boxes,
@@ -144,7 +133,7 @@ Status CalibratedSearch::run(FrameInput &input, Pyramid &pyramid, const Classifi
 			if (!levelNeeded_[i])
 				continue;
 			const LevelChannels level = pyramid.prepare(i);
-			const auto t0 = Clock::now();
+			const auto t0 = StageClock::now();
 			out.classify(classifier, pyramid.scales().levels[i], level, plan_.windows(i),
 				     plan_.windowCount(i), stats);
 			stats.msClassify += msSince(t0);
@@ -159,7 +148,7 @@ Status CalibratedSearch::run(FrameInput &input, Pyramid &pyramid, const Classifi
 	if (!st.ok())
 		return st;
 	// New regions around the candidates outside the existing ones, best first.
-	const auto tRegions = Clock::now();
+	const auto tRegions = StageClock::now();
 	const int found = out.count();
 	const Detection *c = out.data();
 	for (int k = 0; k < found; k++)
@@ -191,7 +180,7 @@ Status CalibratedSearch::pass(FrameInput &input, Pyramid &pyramid, const Classif
 	for (int i = 0; i < levels_; i++) {
 		if (!levelNeeded_[i])
 			continue;
-		const auto tList = Clock::now();
+		const auto tList = StageClock::now();
 		size_t n = 0;
 		if (sparse) {
 			uint8_t *done = evaluated_.data() + plan_.gridFirst(i);
@@ -230,7 +219,7 @@ void CalibratedSearch::classifyListed(int i, size_t n, Pyramid &pyramid,
 		if (levelRectCount_[i] == 0)
 			return;
 		const LevelChannels channels = pyramid.prepare(i, levelRects_[i], levelRectCount_[i]);
-		const auto t0 = Clock::now();
+		const auto t0 = StageClock::now();
 		out.classify(classifier, level, channels, frameList_.data(), n, stats);
 		stats.msClassify += msSince(t0);
 		return;
@@ -239,7 +228,7 @@ void CalibratedSearch::classifyListed(int i, size_t n, Pyramid &pyramid,
 	// bands).
 	const LevelRect read{ plan_.rowsRead(i, frameList_.data(), n), plan_.colsRead(i, frameList_.data(), n) };
 	const LevelChannels channels = pyramid.prepare(i, &read, 1);
-	const auto t0 = Clock::now();
+	const auto t0 = StageClock::now();
 	out.classify(classifier, level, channels, frameList_.data(), n, stats);
 	stats.msClassify += msSince(t0);
 }
@@ -269,7 +258,7 @@ size_t CalibratedSearch::collectDense(int i, const DenseRegion &region, size_t n
 Status CalibratedSearch::prepareRects(FrameInput &input, Pyramid &pyramid, FrameStats &stats,
 				      int firstRegion, bool sparse)
 {
-	const auto t0 = Clock::now();
+	const auto t0 = StageClock::now();
 	int count = 0;
 	for (int i = 0; i < levels_; i++) {
 		int &n = levelRectCount_[i];
@@ -313,7 +302,7 @@ void CalibratedSearch::endFrame(const Detection *detections, int count, FrameSta
 {
 	if (!settings_.sparseDense)
 		return;
-	const auto t0 = Clock::now();
+	const auto t0 = StageClock::now();
 	regions_.update(detections, count);
 	stats.msCandidates += msSince(t0);
 	stats.denseRegions = regions_.count();
