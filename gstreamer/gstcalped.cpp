@@ -279,6 +279,7 @@ void addMeta(GstBuffer *buf, const Detection &d, const gst::PixelBox &box, guint
 	GstVideoRegionOfInterestMeta *m = gst_buffer_add_video_region_of_interest_meta_id(
 		buf, personQuark(), box.x, box.y, box.w, box.h);
 	m->id = static_cast<gint>(id);
+	m->parent_id = -1; // no parent
 	GstStructure *s = gst_structure_new("detection", "score", G_TYPE_DOUBLE, static_cast<double>(d.score),
 					    nullptr);
 	// Present only when known (a calibration, the foot below the horizon): never NaN.

@@ -133,7 +133,7 @@ std::string elementArgs()
 
 struct RoiRecord {
 	std::string type;
-	int id = -1;
+	int id = -1, parentId = 0;
 	unsigned x = 0, y = 0, w = 0, h = 0;
 	bool hasParams = false;
 	double score = NAN;
@@ -202,6 +202,7 @@ FrameRecord recordFrame(GstSample *sample)
 		RoiRecord roi;
 		roi.type = g_quark_to_string(m->roi_type);
 		roi.id = m->id;
+		roi.parentId = m->parent_id;
 		roi.x = m->x;
 		roi.y = m->y;
 		roi.w = m->w;
@@ -395,6 +396,7 @@ void expectSameDetections(const char *format, int frames)
 			const Detection &d = want[i];
 			EXPECT_EQ(r.type, "person");
 			EXPECT_EQ(r.id, static_cast<int>(i));
+			EXPECT_EQ(r.parentId, -1);
 			const unsigned x0 = roundedEdge(d.x, f.width), y0 = roundedEdge(d.y, f.height);
 			EXPECT_EQ(r.x, x0);
 			EXPECT_EQ(r.y, y0);
@@ -475,10 +477,11 @@ TEST(GstElement, LaunchRunsTheVideoToEos)
 		GTEST_SKIP() << "sanitizer build: gst-launch-1.0 is not instrumented and cannot load the "
 				"ASan-built plugin (the in-process cases cover it)";
 	REQUIRE_INPUTS(true);
-	// Frames 1..300 of 795 (identity eos-after) keep it well under a minute on a loaded machine.
+	// Frames 1..300 of 795 (identity passes eos-after - 1 buffers, then ends the stream) keep
+	// it well under a minute on a loaded machine.
 	const ToolRun r = runTool({ "gst-launch-1.0", "-q", "filesrc", "location=" + videoPath(), "!",
 				    "decodebin", "!", "videoconvert", "!", "video/x-raw,format=NV12", "!",
-				    "identity", "eos-after=300", "!", "calped",
+				    "identity", "eos-after=301", "!", "calped",
 				    "model=" + test::inriaModelBlob(), "calibration=" + calibrationPath(),
 				    "resize=2", "!", "fakesink" });
 	if (!r.found)
