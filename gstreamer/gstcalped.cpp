@@ -60,45 +60,35 @@ struct Session {
 	bool warnedTooSmall = false;
 };
 
-GType methodEnumType()
+// Registers an enum type once (the GType is written once, by the first caller).
+GType enumType(gsize &type, const char *name, const GEnumValue *values)
 {
-	static GType type = 0;
-	static const GEnumValue values[] = {
-		{ static_cast<gint>(DetectionMethod::Auto), "calibrated with a calibration, else generic", "auto" },
-		{ static_cast<gint>(DetectionMethod::Generic), "Dollar's sliding window over every window", "generic" },
-		{ static_cast<gint>(DetectionMethod::Calibrated), "only where a person can stand (needs calibration)", "calibrated" },
-		{ 0, nullptr, nullptr },
-	};
 	if (g_once_init_enter(&type))
-		g_once_init_leave(&type, g_enum_register_static("GstCalpedMethod", values));
+		g_once_init_leave(&type, g_enum_register_static(name, values));
 	return type;
 }
 
-GType resizeAtEnumType()
-{
-	static GType type = 0;
-	static const GEnumValue values[] = {
-		{ static_cast<gint>(ResizeAt::Pyramid), "inside the feature pyramid (resize >= 1)", "pyramid" },
-		{ static_cast<gint>(ResizeAt::Frame), "the frame is resampled first", "frame" },
-		{ 0, nullptr, nullptr },
-	};
-	if (g_once_init_enter(&type))
-		g_once_init_leave(&type, g_enum_register_static("GstCalpedResizeAt", values));
-	return type;
-}
+const GEnumValue kMethods[] = {
+	{ gint(DetectionMethod::Auto), "calibrated with a calibration, else generic", "auto" },
+	{ gint(DetectionMethod::Generic), "Dollar's sliding window over every window", "generic" },
+	{ gint(DetectionMethod::Calibrated), "only where a person can stand (needs calibration)", "calibrated" },
+	{ 0, nullptr, nullptr },
+};
+const GEnumValue kResizeAt[] = {
+	{ gint(ResizeAt::Pyramid), "inside the feature pyramid (resize >= 1)", "pyramid" },
+	{ gint(ResizeAt::Frame), "the frame is resampled first", "frame" },
+	{ 0, nullptr, nullptr },
+};
+const GEnumValue kLevels[] = {
+	{ gint(PyramidLevels::Placed), "computed levels placed for the camera (calibrated method)", "placed" },
+	{ gint(PyramidLevels::Toolbox), "one computed level per octave, as Dollar's toolbox", "toolbox" },
+	{ 0, nullptr, nullptr },
+};
+gsize methodType = 0, resizeAtType = 0, levelsType = 0;
 
-GType levelsEnumType()
-{
-	static GType type = 0;
-	static const GEnumValue values[] = {
-		{ static_cast<gint>(PyramidLevels::Placed), "computed levels placed for the camera (calibrated method)", "placed" },
-		{ static_cast<gint>(PyramidLevels::Toolbox), "one computed level per octave, as Dollar's toolbox", "toolbox" },
-		{ 0, nullptr, nullptr },
-	};
-	if (g_once_init_enter(&type))
-		g_once_init_leave(&type, g_enum_register_static("GstCalpedLevels", values));
-	return type;
-}
+GType methodEnumType() { return enumType(methodType, "GstCalpedMethod", kMethods); }
+GType resizeAtEnumType() { return enumType(resizeAtType, "GstCalpedResizeAt", kResizeAt); }
+GType levelsEnumType() { return enumType(levelsType, "GstCalpedLevels", kLevels); }
 
 const char *methodName(DetectionMethod m)
 {

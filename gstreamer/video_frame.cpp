@@ -8,28 +8,21 @@ namespace calped::gst {
 
 bool pixelFormatFor(GstVideoFormat format, PixelFormat &out)
 {
-	switch (format) {
-	case GST_VIDEO_FORMAT_NV12:
-		out = PixelFormat::NV12;
-		return true;
-	case GST_VIDEO_FORMAT_I420:
-		out = PixelFormat::YUV420;
-		return true;
-	case GST_VIDEO_FORMAT_YUY2:
-		out = PixelFormat::YUYV;
-		return true;
-	case GST_VIDEO_FORMAT_RGB:
-		out = PixelFormat::RGB8;
-		return true;
-	case GST_VIDEO_FORMAT_BGR:
-		out = PixelFormat::BGR8;
-		return true;
-	case GST_VIDEO_FORMAT_GRAY8:
-		out = PixelFormat::Gray8;
-		return true;
-	default:
-		return false;
+	static const struct {
+		GstVideoFormat gst;
+		PixelFormat calped;
+	} kFormats[] = {
+		{ GST_VIDEO_FORMAT_NV12, PixelFormat::NV12 },  { GST_VIDEO_FORMAT_I420, PixelFormat::YUV420 },
+		{ GST_VIDEO_FORMAT_YUY2, PixelFormat::YUYV },  { GST_VIDEO_FORMAT_RGB, PixelFormat::RGB8 },
+		{ GST_VIDEO_FORMAT_BGR, PixelFormat::BGR8 },   { GST_VIDEO_FORMAT_GRAY8, PixelFormat::Gray8 },
+	};
+	for (const auto &f : kFormats) {
+		if (f.gst == format) {
+			out = f.calped;
+			return true;
+		}
 	}
+	return false;
 }
 
 YuvEncoding yuvEncodingFor(const GstVideoColorimetry &colorimetry)
