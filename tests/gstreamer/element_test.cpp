@@ -305,19 +305,35 @@ ImageView viewOf(const FrameRecord &f)
 	}
 	v.width = f.width;
 	v.height = f.height;
+	const bool yuv = f.format == GST_VIDEO_FORMAT_NV12 || f.format == GST_VIDEO_FORMAT_I420 ||
+			 f.format == GST_VIDEO_FORMAT_YUY2;
 	switch (f.format) {
 	case GST_VIDEO_FORMAT_RGB:
 		v.format = PixelFormat::RGB8;
 		break;
+	case GST_VIDEO_FORMAT_BGR:
+		v.format = PixelFormat::BGR8;
+		break;
+	case GST_VIDEO_FORMAT_GRAY8:
+		v.format = PixelFormat::Gray8;
+		break;
 	case GST_VIDEO_FORMAT_NV12:
 		v.format = PixelFormat::NV12;
+		break;
+	case GST_VIDEO_FORMAT_I420:
+		v.format = PixelFormat::YUV420;
+		break;
+	case GST_VIDEO_FORMAT_YUY2:
+		v.format = PixelFormat::YUYV;
+		break;
+	default:
+		ADD_FAILURE() << "unexpected format " << gst_video_format_to_string(f.format);
+	}
+	if (yuv) {
 		// No colorimetry in the caps: GStreamer's default for SD video is BT.601, limited.
 		EXPECT_EQ(f.colorimetry.matrix, GST_VIDEO_COLOR_MATRIX_BT601);
 		EXPECT_EQ(f.colorimetry.range, GST_VIDEO_COLOR_RANGE_16_235);
 		v.yuv = YuvEncoding::Bt601Limited;
-		break;
-	default:
-		ADD_FAILURE() << "unexpected format " << gst_video_format_to_string(f.format);
 	}
 	return v;
 }
@@ -490,40 +506,56 @@ TEST(GstElement, LaunchRunsTheVideoToEos)
 	EXPECT_EQ(r.err.find("ERROR"), std::string::npos) << r.err;
 }
 
-TEST(GstElement, RgbMetasAreTheDetectorsDetections)
+// Every caps format the element takes.
+class GstElementFormat : public testing::TestWithParam<const char *>
+{};
+
+TEST_P(GstElementFormat, MetasAreTheDetectorsDetections)
 {
 	REQUIRE_INPUTS(true);
-	expectSameDetections("RGB", 20);
+	expectSameDetections(GetParam(), 20);
 }
 
-TEST(GstElement, Nv12MetasAreTheDetectorsDetections)
+// Where drawBox writes the top-left pixel of a box, and what.
+std::vector<uint8_t> boxCorner(const FrameRecord &f, const RoiRecord &r)
 {
-	REQUIRE_INPUTS(true);
-	expectSameDetections("NV12", 20);
+	const uint8_t *row = f.planes[0].data() + static_cast<size_t>(r.y) * f.strides[0];
+	switch (f.format) {
+	case GST_VIDEO_FORMAT_RGB:
+	case GST_VIDEO_FORMAT_BGR:
+		return { row + 3 * r.x, row + 3 * r.x + 3 };
+	case GST_VIDEO_FORMAT_YUY2:
+		return { row[2 * r.x] };
+	default: // GRAY8, the luma planes of NV12 and I420
+		return { row[r.x] };
+	}
 }
 
-TEST(GstElement, DrawingChangesOnlyTheFrame)
+TEST_P(GstElementFormat, DrawingChangesOnlyTheFrame)
 {
 	REQUIRE_INPUTS(true);
-	const PipelineRun plain = runPipeline(videoPipeline("RGB", elementArgs()), 3);
-	const PipelineRun drawn = runPipeline(videoPipeline("RGB", elementArgs() + " draw=true"), 3);
+	const PipelineRun plain = runPipeline(videoPipeline(GetParam(), elementArgs()), 3);
+	const PipelineRun drawn = runPipeline(videoPipeline(GetParam(), elementArgs() + " draw=true"), 3);
 	ASSERT_EQ(plain.error, "");
 	ASSERT_EQ(drawn.error, "");
 	ASSERT_EQ(plain.frames.size(), 3u);
 	ASSERT_EQ(drawn.frames.size(), 3u);
+	const bool colour = std::string(GetParam()) == "RGB" || std::string(GetParam()) == "BGR";
+	const std::vector<uint8_t> pen = colour ? std::vector<uint8_t>{ 0, 255, 0 } : std::vector<uint8_t>{ 255 };
 	for (size_t k = 0; k < 3; k++) {
-		ASSERT_FALSE(plain.frames[k].rois.empty());
-		ASSERT_EQ(plain.frames[k].rois.size(), drawn.frames[k].rois.size());
-		EXPECT_NE(plain.frames[k].planes[0], drawn.frames[k].planes[0]) << "frame " << k + 1;
-		// A box's top-left pixel is green.
-		const RoiRecord &r = drawn.frames[k].rois[0];
-		const uint8_t *p = drawn.frames[k].planes[0].data() +
-				   static_cast<size_t>(r.y) * drawn.frames[k].strides[0] + 3 * r.x;
-		EXPECT_EQ(p[0], 0);
-		EXPECT_EQ(p[1], 255);
-		EXPECT_EQ(p[2], 0);
+		const FrameRecord &a = plain.frames[k], &b = drawn.frames[k];
+		ASSERT_FALSE(a.rois.empty());
+		ASSERT_EQ(a.rois.size(), b.rois.size());
+		EXPECT_NE(a.planes[0], b.planes[0]) << "frame " << k + 1;
+		for (size_t p = 1; p < a.planes.size(); p++)
+			EXPECT_EQ(a.planes[p], b.planes[p]) << "chroma plane " << p << " changed";
+		EXPECT_EQ(boxCorner(b, b.rois[0]), pen);
 	}
 }
+
+INSTANTIATE_TEST_SUITE_P(Caps, GstElementFormat,
+			 testing::Values("RGB", "BGR", "GRAY8", "NV12", "I420", "YUY2"),
+			 [](const testing::TestParamInfo<const char *> &info) { return std::string(info.param); });
 
 TEST(GstElement, MinScoreDropsWeakDetections)
 {
