@@ -557,6 +557,29 @@ INSTANTIATE_TEST_SUITE_P(Caps, GstElementFormat,
 			 testing::Values("RGB", "BGR", "GRAY8", "NV12", "I420", "YUY2"),
 			 [](const testing::TestParamInfo<const char *> &info) { return std::string(info.param); });
 
+// Behind a tee every buffer is shared (not writable): the element still attaches its metas
+// (GstBaseTransform gives it a shallow copy), the same as on an unshared buffer.
+TEST(GstElement, SharedBuffersBehindATeeGetTheirMetas)
+{
+	REQUIRE_INPUTS(true);
+	if (!haveElements({ "tee", "queue", "fakesink" }))
+		GTEST_SKIP() << "no tee, queue or fakesink (gstreamer1.0-plugins-base)";
+	const PipelineRun plain = runPipeline(videoPipeline("NV12", elementArgs()), 3);
+	const PipelineRun shared = runPipeline(
+		"filesrc location=" + videoPath() + " ! decodebin ! videoconvert ! video/x-raw,format=NV12 "
+		"! tee name=t ! queue ! calped " + elementArgs() +
+		" ! appsink name=sink sync=false max-buffers=4 t. ! queue ! fakesink sync=false", 3);
+	ASSERT_EQ(shared.error, "");
+	ASSERT_EQ(plain.frames.size(), 3u);
+	ASSERT_EQ(shared.frames.size(), 3u);
+	for (size_t k = 0; k < 3; k++) {
+		ASSERT_FALSE(plain.frames[k].rois.empty());
+		ASSERT_EQ(shared.frames[k].rois.size(), plain.frames[k].rois.size()) << "frame " << k + 1;
+		for (size_t i = 0; i < plain.frames[k].rois.size(); i++)
+			EXPECT_EQ(shared.frames[k].rois[i].score, plain.frames[k].rois[i].score);
+	}
+}
+
 TEST(GstElement, MinScoreDropsWeakDetections)
 {
 	REQUIRE_INPUTS(true);
