@@ -295,8 +295,15 @@ std::string videoPipeline(const char *format, const std::string &calpedArgs)
 	       format + " ! calped " + calpedArgs + " ! appsink name=sink sync=false max-buffers=4";
 }
 
+// A caps format and what it is for calped: the test's own table, not the element's.
+struct CapsFormat {
+	const char *caps;
+	PixelFormat format;
+	bool yuv;
+};
+
 // The test's own view of a recorded frame (not the element's mapping code).
-ImageView viewOf(const FrameRecord &f)
+ImageView viewOf(const FrameRecord &f, const CapsFormat &caps)
 {
 	ImageView v;
 	for (size_t p = 0; p < f.planes.size() && p < 3; p++) {
@@ -305,31 +312,9 @@ ImageView viewOf(const FrameRecord &f)
 	}
 	v.width = f.width;
 	v.height = f.height;
-	const bool yuv = f.format == GST_VIDEO_FORMAT_NV12 || f.format == GST_VIDEO_FORMAT_I420 ||
-			 f.format == GST_VIDEO_FORMAT_YUY2;
-	switch (f.format) {
-	case GST_VIDEO_FORMAT_RGB:
-		v.format = PixelFormat::RGB8;
-		break;
-	case GST_VIDEO_FORMAT_BGR:
-		v.format = PixelFormat::BGR8;
-		break;
-	case GST_VIDEO_FORMAT_GRAY8:
-		v.format = PixelFormat::Gray8;
-		break;
-	case GST_VIDEO_FORMAT_NV12:
-		v.format = PixelFormat::NV12;
-		break;
-	case GST_VIDEO_FORMAT_I420:
-		v.format = PixelFormat::YUV420;
-		break;
-	case GST_VIDEO_FORMAT_YUY2:
-		v.format = PixelFormat::YUYV;
-		break;
-	default:
-		ADD_FAILURE() << "unexpected format " << gst_video_format_to_string(f.format);
-	}
-	if (yuv) {
+	v.format = caps.format;
+	EXPECT_STREQ(gst_video_format_to_string(f.format), caps.caps);
+	if (caps.yuv) {
 		// No colorimetry in the caps: GStreamer's default for SD video is BT.601, limited.
 		EXPECT_EQ(f.colorimetry.matrix, GST_VIDEO_COLOR_MATRIX_BT601);
 		EXPECT_EQ(f.colorimetry.range, GST_VIDEO_COLOR_RANGE_16_235);
@@ -351,7 +336,7 @@ struct ApiRun {
 
 // calped's C++ API on the recorded frames, configured as the element's properties say:
 // model, calibration, resize 2, everything else the defaults.
-ApiRun runDetector(const std::vector<FrameRecord> &frames)
+ApiRun runDetector(const std::vector<FrameRecord> &frames, const CapsFormat &caps)
 {
 	ApiRun out;
 	std::vector<uint8_t> blob;
@@ -378,7 +363,7 @@ ApiRun runDetector(const std::vector<FrameRecord> &frames)
 	}
 	for (const FrameRecord &f : frames) {
 		Detections dets;
-		const Status s = detector->detect(viewOf(f), dets);
+		const Status s = detector->detect(viewOf(f, caps), dets);
 		EXPECT_TRUE(s.ok()) << s.message();
 		out.detections.emplace_back(dets.begin(), dets.end());
 		out.ms.push_back(detector->lastStats().msTotal);
@@ -394,12 +379,13 @@ double mean(const std::vector<double> &v)
 	return v.empty() ? 0 : s / static_cast<double>(v.size());
 }
 
-void expectSameDetections(const char *format, int frames)
+void expectSameDetections(const CapsFormat &caps, int frames)
 {
+	const char *format = caps.caps;
 	const PipelineRun run = runPipeline(videoPipeline(format, elementArgs()), frames);
 	ASSERT_EQ(run.error, "");
 	ASSERT_EQ(static_cast<int>(run.frames.size()), frames);
-	const ApiRun api = runDetector(run.frames);
+	const ApiRun api = runDetector(run.frames, caps);
 	ASSERT_EQ(api.detections.size(), run.frames.size());
 	size_t total = 0;
 	for (size_t k = 0; k < run.frames.size(); k++) {
@@ -507,7 +493,7 @@ TEST(GstElement, LaunchRunsTheVideoToEos)
 }
 
 // Every caps format the element takes.
-class GstElementFormat : public testing::TestWithParam<const char *>
+class GstElementFormat : public testing::TestWithParam<CapsFormat>
 {};
 
 TEST_P(GstElementFormat, MetasAreTheDetectorsDetections)
@@ -534,13 +520,13 @@ std::vector<uint8_t> boxCorner(const FrameRecord &f, const RoiRecord &r)
 TEST_P(GstElementFormat, DrawingChangesOnlyTheFrame)
 {
 	REQUIRE_INPUTS(true);
-	const PipelineRun plain = runPipeline(videoPipeline(GetParam(), elementArgs()), 3);
-	const PipelineRun drawn = runPipeline(videoPipeline(GetParam(), elementArgs() + " draw=true"), 3);
+	const PipelineRun plain = runPipeline(videoPipeline(GetParam().caps, elementArgs()), 3);
+	const PipelineRun drawn = runPipeline(videoPipeline(GetParam().caps, elementArgs() + " draw=true"), 3);
 	ASSERT_EQ(plain.error, "");
 	ASSERT_EQ(drawn.error, "");
 	ASSERT_EQ(plain.frames.size(), 3u);
 	ASSERT_EQ(drawn.frames.size(), 3u);
-	const bool colour = std::string(GetParam()) == "RGB" || std::string(GetParam()) == "BGR";
+	const bool colour = GetParam().format == PixelFormat::RGB8 || GetParam().format == PixelFormat::BGR8;
 	const std::vector<uint8_t> pen = colour ? std::vector<uint8_t>{ 0, 255, 0 } : std::vector<uint8_t>{ 255 };
 	for (size_t k = 0; k < 3; k++) {
 		const FrameRecord &a = plain.frames[k], &b = drawn.frames[k];
@@ -554,8 +540,13 @@ TEST_P(GstElementFormat, DrawingChangesOnlyTheFrame)
 }
 
 INSTANTIATE_TEST_SUITE_P(Caps, GstElementFormat,
-			 testing::Values("RGB", "BGR", "GRAY8", "NV12", "I420", "YUY2"),
-			 [](const testing::TestParamInfo<const char *> &info) { return std::string(info.param); });
+			 testing::Values(CapsFormat{ "RGB", PixelFormat::RGB8, false },
+					 CapsFormat{ "BGR", PixelFormat::BGR8, false },
+					 CapsFormat{ "GRAY8", PixelFormat::Gray8, false },
+					 CapsFormat{ "NV12", PixelFormat::NV12, true },
+					 CapsFormat{ "I420", PixelFormat::YUV420, true },
+					 CapsFormat{ "YUY2", PixelFormat::YUYV, true }),
+			 [](const testing::TestParamInfo<CapsFormat> &info) { return std::string(info.param.caps); });
 
 // Behind a tee every buffer is shared (not writable): the element still attaches its metas
 // (GstBaseTransform gives it a shallow copy), the same as on an unshared buffer.
