@@ -25,6 +25,7 @@
 #include <calped/detector.h>
 #include <calped/model.h>
 
+#include "common/alloc_counter.h"
 #include "test_data.h"
 
 namespace {
@@ -547,6 +548,55 @@ INSTANTIATE_TEST_SUITE_P(Caps, GstElementFormat,
 					 CapsFormat{ "I420", PixelFormat::YUV420, true },
 					 CapsFormat{ "YUY2", PixelFormat::YUYV, true }),
 			 [](const testing::TestParamInfo<CapsFormat> &info) { return std::string(info.param.caps); });
+
+// The element's per-frame path allocates nothing of its own: operator new is counted
+// (tests/common/alloc_counter.cpp; the plugin's calls bind to it) while calped transforms
+// frames 6..20. GStreamer, GLib and libav are C and allocate with malloc (their metas,
+// structures and messages are theirs), and the test thread only waits for the end.
+struct FrameCounts {
+	int seen = 0;          // buffers arriving at calped's sink pad
+	long allocations = -1; // while frames 6..20 were transformed
+};
+
+GstPadProbeReturn countFrames(GstPad *, GstPadProbeInfo *, gpointer data)
+{
+	FrameCounts &c = *static_cast<FrameCounts *>(data);
+	c.seen++;
+	if (c.seen == 6)
+		test::startCountingAllocations();
+	else if (c.seen == 21)
+		c.allocations = test::stopCountingAllocations();
+	return GST_PAD_PROBE_OK;
+}
+
+TEST(GstElement, NoAllocationPerFrame)
+{
+	REQUIRE_INPUTS(true);
+	const std::string description = "filesrc location=" + videoPath() +
+		" ! decodebin ! videoconvert ! video/x-raw,format=NV12 ! identity eos-after=23 ! calped name=det " +
+		elementArgs() + " reject-static=true ! fakesink sync=false";
+	GError *err = nullptr;
+	GstElement *pipeline = gst_parse_launch(description.c_str(), &err);
+	ASSERT_NE(pipeline, nullptr) << (err ? err->message : "?");
+	FrameCounts counts;
+	GstElement *det = gst_bin_get_by_name(GST_BIN(pipeline), "det");
+	GstPad *pad = gst_element_get_static_pad(det, "sink");
+	gst_pad_add_probe(pad, GST_PAD_PROBE_TYPE_BUFFER, countFrames, &counts, nullptr);
+	GstBus *bus = gst_element_get_bus(pipeline);
+	gst_element_set_state(pipeline, GST_STATE_PLAYING);
+	GstMessage *msg = gst_bus_timed_pop_filtered(bus, 60 * GST_SECOND,
+		static_cast<GstMessageType>(GST_MESSAGE_EOS | GST_MESSAGE_ERROR));
+	ASSERT_NE(msg, nullptr);
+	EXPECT_EQ(GST_MESSAGE_TYPE(msg), GST_MESSAGE_EOS);
+	gst_message_unref(msg);
+	gst_element_set_state(pipeline, GST_STATE_NULL);
+	EXPECT_GE(counts.seen, 21);
+	EXPECT_EQ(counts.allocations, 0) << "operator new calls while calped transformed frames 6-20";
+	gst_object_unref(bus);
+	gst_object_unref(pad);
+	gst_object_unref(det);
+	gst_object_unref(pipeline);
+}
 
 // Behind a tee every buffer is shared (not writable): the element still attaches its metas
 // (GstBaseTransform gives it a shallow copy), the same as on an unshared buffer.
