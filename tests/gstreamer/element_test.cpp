@@ -689,6 +689,18 @@ TEST(GstElement, CalibrationForAnotherFrameSizeIsAClearError)
 	EXPECT_NE(err.find("is for 768x576 frames, the stream is 320x240"), std::string::npos) << err;
 }
 
+TEST(GstElement, DetectorSetupFailureIsAnElementErrorWithCalpedsMessage)
+{
+	REQUIRE_TEST_SOURCE();
+	if (test::inriaModelBlob().empty())
+		GTEST_SKIP() << "no INRIA model blob (needs ../shared and calped-convert)";
+	const std::string err = pipelineError(std::string(kTestSource) + " ! calped model=" +
+					      test::inriaModelBlob() + " method=calibrated");
+	EXPECT_NE(err.find("cannot set up the detector for 320x240 frames: InvalidArgument: "), std::string::npos)
+		<< err;
+	EXPECT_NE(err.find("camera"), std::string::npos) << err;
+}
+
 TEST(GstElement, AutoCalibrationIsNotImplementedYet)
 {
 	REQUIRE_TEST_SOURCE();
