@@ -644,11 +644,23 @@ TEST(GstElement, MinScoreDropsWeakDetections)
 			GTEST_SKIP() << "no videotestsrc or appsink (gstreamer1.0-plugins-base)"; \
 	} while (0)
 
+#define REQUIRE_MODEL()                                                                        \
+	do {                                                                                   \
+		if (test::inriaModelBlob().empty())                                                 \
+			GTEST_SKIP() << "no INRIA model blob (needs ../shared and calped-convert)";    \
+	} while (0)
+
+// The error of `calped ARGS` on the test source; "model=BLOB" is prepended with `model`.
+std::string testSourceError(const std::string &args, bool model = true)
+{
+	const std::string m = model ? "model=" + test::inriaModelBlob() + " " : "";
+	return pipelineError(std::string(kTestSource) + " ! calped " + m + args);
+}
+
 TEST(GstElement, MissingModelIsAnElementErrorNamingTheFile)
 {
 	REQUIRE_TEST_SOURCE();
-	const std::string err = pipelineError(std::string(kTestSource) +
-					      " ! calped model=/nonexistent/calped-model.cpm");
+	const std::string err = testSourceError("model=/nonexistent/calped-model.cpm", false);
 	EXPECT_NE(err.find("/nonexistent/calped-model.cpm"), std::string::npos) << err;
 	EXPECT_NE(err.find("not found"), std::string::npos) << err;
 }
@@ -656,7 +668,7 @@ TEST(GstElement, MissingModelIsAnElementErrorNamingTheFile)
 TEST(GstElement, NoModelPropertyIsAnElementError)
 {
 	REQUIRE_TEST_SOURCE();
-	const std::string err = pipelineError(std::string(kTestSource) + " ! calped");
+	const std::string err = testSourceError("", false);
 	EXPECT_NE(err.find("'model' property"), std::string::npos) << err;
 }
 
@@ -664,7 +676,7 @@ TEST(GstElement, CorruptModelIsAnElementErrorNamingTheProblem)
 {
 	REQUIRE_TEST_SOURCE();
 	const std::string path = writeTempFile("corrupt.cpm", std::string(64, 'x'));
-	const std::string err = pipelineError(std::string(kTestSource) + " ! calped model=" + path);
+	const std::string err = testSourceError("model=" + path, false);
 	EXPECT_NE(err.find(path), std::string::npos) << err;
 	EXPECT_NE(err.find("ModelBadMagic"), std::string::npos) << err;
 }
@@ -672,11 +684,9 @@ TEST(GstElement, CorruptModelIsAnElementErrorNamingTheProblem)
 TEST(GstElement, CorruptCalibrationIsAnElementError)
 {
 	REQUIRE_TEST_SOURCE();
-	if (test::inriaModelBlob().empty())
-		GTEST_SKIP() << "no INRIA model blob (needs ../shared and calped-convert)";
+	REQUIRE_MODEL();
 	const std::string path = writeTempFile("corrupt-calibration.xml", "<Camera name=\"x\"><Geometry");
-	const std::string err = pipelineError(std::string(kTestSource) + " ! calped model=" +
-					      test::inriaModelBlob() + " calibration=" + path);
+	const std::string err = testSourceError("calibration=" + path);
 	EXPECT_NE(err.find("calibration: "), std::string::npos) << err;
 	EXPECT_NE(err.find(path), std::string::npos) << err;
 }
@@ -685,17 +695,15 @@ TEST(GstElement, CalibrationForAnotherFrameSizeIsAClearError)
 {
 	REQUIRE_TEST_SOURCE();
 	REQUIRE_INPUTS(false);
-	const std::string err = pipelineError(std::string(kTestSource) + " ! calped " + elementArgs());
+	const std::string err = testSourceError(elementArgs(), false);
 	EXPECT_NE(err.find("is for 768x576 frames, the stream is 320x240"), std::string::npos) << err;
 }
 
 TEST(GstElement, DetectorSetupFailureIsAnElementErrorWithCalpedsMessage)
 {
 	REQUIRE_TEST_SOURCE();
-	if (test::inriaModelBlob().empty())
-		GTEST_SKIP() << "no INRIA model blob (needs ../shared and calped-convert)";
-	const std::string err = pipelineError(std::string(kTestSource) + " ! calped model=" +
-					      test::inriaModelBlob() + " method=calibrated");
+	REQUIRE_MODEL();
+	const std::string err = testSourceError("method=calibrated");
 	EXPECT_NE(err.find("cannot set up the detector for 320x240 frames: InvalidArgument: "), std::string::npos)
 		<< err;
 	EXPECT_NE(err.find("camera"), std::string::npos) << err;
@@ -704,18 +712,15 @@ TEST(GstElement, DetectorSetupFailureIsAnElementErrorWithCalpedsMessage)
 TEST(GstElement, AutoCalibrationIsNotImplementedYet)
 {
 	REQUIRE_TEST_SOURCE();
-	if (test::inriaModelBlob().empty())
-		GTEST_SKIP() << "no INRIA model blob (needs ../shared and calped-convert)";
-	const std::string err = pipelineError(std::string(kTestSource) + " ! calped model=" +
-					      test::inriaModelBlob() + " calibration=auto");
+	REQUIRE_MODEL();
+	const std::string err = testSourceError("calibration=auto");
 	EXPECT_NE(err.find("self-calibration"), std::string::npos) << err;
 }
 
 TEST(GstElement, GenericMethodWithoutCalibration)
 {
-	if (test::inriaModelBlob().empty())
-		GTEST_SKIP() << "no INRIA model blob (needs ../shared and calped-convert)";
 	REQUIRE_TEST_SOURCE();
+	REQUIRE_MODEL();
 	const PipelineRun run = runPipeline(std::string(kTestSource) + " ! calped model=" +
 					    test::inriaModelBlob() + " ! appsink name=sink sync=false", 2);
 	EXPECT_EQ(run.error, "");
