@@ -26,6 +26,14 @@ packages=(
 	libusb-1.0-0-dev
 	aravis-tools
 	libcamera-dev
+	# The GStreamer element (gstreamer/) and its tests: headers, gst-inspect-1.0 and
+	# gst-launch-1.0, and the plugins that decode the PETS video (avidemux, avdec_msmpeg4).
+	libgstreamer1.0-dev
+	libgstreamer-plugins-base1.0-dev
+	gstreamer1.0-tools
+	gstreamer1.0-plugins-base
+	gstreamer1.0-plugins-good
+	gstreamer1.0-libav
 )
 packages+=("$@")
 
