@@ -734,12 +734,14 @@ TEST(GstElement, GenericMethodWithoutCalibration)
 
 // Sanitizer builds (the hooks are called by ASan and LeakSanitizer only): GLib allocates in
 // the constructors of the libraries GStreamer's plugins load (decoders), and LeakSanitizer
-// reports those blocks at exit; they are not calped's. Only allocations made while a
-// library initialises (_dl_init) are suppressed; that frame is only seen with the slow
-// unwinder (Debian's GLib has no frame pointers), hence fast_unwind_on_malloc=0.
+// reports those blocks at exit; they are not calped's. Suppressed: allocations made while a
+// library initialises (_dl_init), and GLib's quark table (interned strings live as long as
+// the process by design; a fresh registry, as in CI, interns the names of every plugin it
+// scans). The _dl_init frame is only seen with the slow unwinder (Debian's GLib has no
+// frame pointers), hence fast_unwind_on_malloc=0.
 extern "C" const char *__lsan_default_suppressions()
 {
-	return "leak:_dl_init\n";
+	return "leak:_dl_init\nleak:g_quark_from_string\nleak:g_quark_from_static_string\n";
 }
 extern "C" const char *__asan_default_options()
 {
