@@ -70,8 +70,9 @@ protected:
 
 TEST_F(Programs, AllAreHere)
 {
-	for (const char *name : { "calped-detect", "calped-eval", "calped-convert", "calped-calibrate",
-				  "calped-play" })
+	// The programs every tools build has (calped-convert also needs libmatio, which a
+	// cross build may lack: it is tested wherever it is built).
+	for (const char *name : { "calped-detect", "calped-eval", "calped-calibrate", "calped-play" })
 		EXPECT_TRUE(has(name)) << name << " not passed to the test (tests/tools/meson.build)";
 }
 
@@ -184,7 +185,10 @@ TEST_F(Programs, CrossFlagUsageErrors)
 		    run("calped-eval", { "--frames", "f", "--gt", "g", "--model", "m", "--resizes", "0.5",
 					 "--resize-at", "pyramid" }),
 		    2, "--resize-at pyramid needs --resize >= 1");
-	expectError("calped-convert", run("calped-convert", { "only-one.mat" }), 2, "expected two arguments");
+	if (has("calped-convert")) {
+		expectError("calped-convert", run("calped-convert", { "only-one.mat" }), 2,
+			    "expected two arguments");
+	}
 	// An unambiguous prefix is the option; an ambiguous one is named with its candidates.
 	expectError("calped-detect", run("calped-detect", { "--resize-a=frame", "--model", "m", "missing.png" }), 1,
 		    "missing.png");
