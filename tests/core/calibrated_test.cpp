@@ -128,7 +128,7 @@ TEST(CalibratedDetector, StaticGateSkipsSparseWindowsWhereNothingMoves)
 		cfg.staticRejection->warmupFrames = 2;
 		std::unique_ptr<Detector> det;
 		ASSERT_TRUE(Detector::create(model, cfg, det).ok());
-		DetectorInternals::of(*det).calibrated.setStaticGate(gate == 1);
+		DetectorInternals::of(*det).calibratedSearch.setStaticGate(gate == 1);
 		Detections d;
 		for (int f = 0; f < 2; f++) { // warm-up: every sparse window
 			ASSERT_TRUE(det->detect(ImageView::rgb8(ground.data(), 640, 480), d).ok());
@@ -351,8 +351,8 @@ TEST(CalibratedDetector, PetsRectanglesGiveTheSameDetections)
 		std::unique_ptr<Detector> fixed, rects;
 		ASSERT_TRUE(Detector::create(model, cfg, fixed).ok());
 		ASSERT_TRUE(Detector::create(model, cfg, rects).ok());
-		ASSERT_TRUE(DetectorInternals::of(*rects).calibrated.rectsPerFrame());
-		DetectorInternals::of(*fixed).calibrated.setRectsPerFrame(false);
+		ASSERT_TRUE(DetectorInternals::of(*rects).calibratedSearch.rectsPerFrame());
+		DetectorInternals::of(*fixed).calibratedSearch.setRectsPerFrame(false);
 		int detections = 0;
 		uint64_t skipped = 0;
 		expectSameOnPets(*fixed, *rects, 10, detections, skipped);

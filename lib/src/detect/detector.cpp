@@ -64,7 +64,7 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 			return st;
 	}
 	if (calibrated_)
-		return calibrated.init(camera_, params, *cal, boxes, frameW, frameH, cfg.maxCandidates,
+		return calibratedSearch.init(camera_, params, *cal, boxes, frameW, frameH, cfg.maxCandidates,
 				       pyramid, classifier, rejectStatic_ ? &static_ : nullptr);
 	return Status::success();
 }
@@ -112,8 +112,8 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	candidates_.clear();
 	pyramid.beginFrame();
 	if (calibrated_) {
-		calibrated.beginFrame(stats);
-		st = calibrated.run(frame, pyramid, classifier, candidates_, stats);
+		calibratedSearch.beginFrame(stats);
+		st = calibratedSearch.run(frame, pyramid, classifier, candidates_, stats);
 	} else {
 		st = searchEveryWindow(frame, pyramid, classifier, candidates_, stats);
 	}
@@ -127,7 +127,7 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 	Detection *boxes = candidates_.data();
 	int kept = suppression_.run(boxes, candidates_.count());
 	if (calibrated_)
-		calibrated.endFrame(boxes, kept, stats);
+		calibratedSearch.endFrame(boxes, kept, stats);
 	if (rejectStatic_) {
 		const int before = kept;
 		kept = static_.reject(boxes, kept);

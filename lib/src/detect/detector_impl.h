@@ -27,7 +27,7 @@ public:
 	FrameStats stats;
 	Pyramid pyramid;
 	Classifier classifier;
-	CalibratedSearch calibrated; // the calibrated method only
+	CalibratedSearch calibratedSearch; // the calibrated method only
 
 private:
 	Status checkImage(const ImageView &image) const;

@@ -92,15 +92,8 @@ Status CalibratedSearch::init(const CameraModel &camera, const ModelParams &para
 
 void CalibratedSearch::beginFrame(FrameStats &stats)
 {
-	if (!settings_.sparseDense)
-		return;
-	if (!gate_) {
-		for (int i = 0; i < levels_; i++) {
-			sparseList_[i] = plan_.sparseWindows(i);
-			sparseCount_[i] = plan_.sparseCount(i);
-		}
-		return;
-	}
+	if (!settings_.sparseDense || !gate_)
+		return; // the plan's lists, set up once
 	// Until the background is trusted, every sparse window.
 	const bool ready = scene_->ready();
 	size_t k = 0, kept = 0;
@@ -296,6 +289,16 @@ Status CalibratedSearch::prepareRects(FrameInput &input, Pyramid &pyramid, Frame
 	}
 	stats.msCandidates += msSince(t0);
 	return pyramid.compute(input, PyramidDemand::of(rectLevels_, rectList_, count));
+}
+
+void CalibratedSearch::setStaticGate(bool on)
+{
+	gate_ = on && scene_ != nullptr;
+	// Ungated, every frame has the plan's sparse lists.
+	for (int i = 0; i < levels_; i++) {
+		sparseList_[i] = plan_.sparseWindows(i);
+		sparseCount_[i] = plan_.sparseCount(i);
+	}
 }
 
 void CalibratedSearch::endFrame(const Detection *detections, int count, FrameStats &stats)

@@ -47,7 +47,7 @@ public:
 	// instead of each pass's rectangles, and the gate of the sparse grid on or off.
 	bool rectsPerFrame() const { return rectsPerFrame_; }
 	void setRectsPerFrame(bool on) { rectsPerFrame_ = on && rectsAllowed_; }
-	void setStaticGate(bool on) { gate_ = on && scene_ != nullptr; }
+	void setStaticGate(bool on);
 
 private:
 	// One pass of the sparse-dense search over the regions from firstRegion on (and
