@@ -10,9 +10,9 @@
 #   out/main/summary.txt      the table printed at the end
 #   out/main/score.json       its detections scored against the ground truth (calped-eval
 #                             --score-only: TPR, FPPF, log-average miss rate)
-# calped-detect runs with its defaults and a calibration (the calibrated method, resize
-# inside the pyramid, placed pyramid levels) at resize 2, with --reject-static: PETS is a
-# fixed camera (docs/calibrated.md). A few minutes on a fresh machine, most of it the build.
+# calped-detect runs with its defaults and a calibration (the calibrated method, the resize
+# chosen from the camera (2 for PETS) inside the pyramid, placed pyramid levels), with
+# --reject-static: PETS is a fixed camera (docs/calibrated.md). A few minutes on a fresh machine, most of it the build.
 # The long evaluation sweep (every method, resize and pyramid, docs/results.md) is
 # scripts/run-eval-sweep.sh.
 set -euo pipefail
@@ -27,16 +27,15 @@ bash scripts/prepare-run.sh
 out=out/main
 model=models/AcfInriaDetector.cpm
 frames=data/pets/frames
-resize=2
 rm -rf "$out"
 mkdir -p "$out"
 
 calib=${CALPED_SHARED_DIR:-../shared}/data/pets2009-s2l1/View_001.xml
-# The fastest configuration that meets the issue's accuracy targets is calped-detect's
-# default with a calibration: the calibrated method, the resize inside the pyramid, computed
-# levels placed among the needed ones; static-scene rejection is asked for, as it assumes a
-# fixed camera (docs/calibrated.md, docs/cli.md).
-cmd=("$builddir"/tools/detect/calped-detect --model "$model" --resize "$resize"
+# The best configuration is calped-detect's default with a calibration: the calibrated
+# method, the resize chosen from the camera and done inside the pyramid, computed levels
+# placed among the needed ones; static-scene rejection is asked for, as it assumes a fixed
+# camera (docs/calibrated.md, docs/cli.md).
+cmd=("$builddir"/tools/detect/calped-detect --model "$model"
 	--calib "$calib" --reject-static
 	--csv "$out/detections.csv" --jsonl "$out/frames.jsonl"
 	--overlay "$out/overlays" --overlay-every 100 "$frames")
@@ -45,6 +44,7 @@ echo "run-main: ${cmd[*]}"
 "${cmd[@]}" 2>&1 | tee "$out/detect.log"
 
 summary=$(grep '^calped-detect: summary:' "$out/detect.log" | tail -n 1)
+resize=$(sed -n 's/^calped-detect: resize auto: \([^ ]*\) .*/\1/p' "$out/detect.log")
 if [[ -z "$summary" ]]; then
 	echo "run-main: calped-detect printed no summary line" >&2
 	exit 1
@@ -53,7 +53,7 @@ fi
 field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$summary"; }
 
 {
-	echo "calped main job: PETS 2009 S2L1 view 1, AcfInriaDetector, calibrated with static-scene rejection, resize $resize inside the pyramid, placed levels"
+	echo "calped main job: PETS 2009 S2L1 view 1, AcfInriaDetector, calibrated with static-scene rejection, resize ${resize:-?} (chosen from the camera) inside the pyramid, placed levels"
 	printf '  %-22s %s\n' \
 		"frames" "$(field frames)" \
 		"detections" "$(field detections)" \

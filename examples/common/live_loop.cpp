@@ -52,8 +52,14 @@ struct DetectorSetup {
 
 	bool create(const LiveOptions &options, int width, int height, std::string &error)
 	{
-		return apps::createDetector(inputs.model, options.detector, width, height,
-					    inputs.hasCamera ? &inputs.camera : nullptr, detector, error);
+		std::string note;
+		if (!apps::createDetector(inputs.model, options.detector, width, height,
+					  inputs.hasCamera ? &inputs.camera : nullptr, detector, error,
+					  &note))
+			return false;
+		if (!note.empty())
+			std::fprintf(stderr, "%s\n", note.c_str());
+		return true;
 	}
 };
 

@@ -50,7 +50,8 @@ TEST(DetectorConfig, DefaultsAreTheBestConfiguration)
 	EXPECT_EQ(c.calibrated->levels, PyramidLevels::Placed);
 	EXPECT_TRUE(c.calibrated->sparseDense);
 	EXPECT_TRUE(c.calibrated->boxVoting);
-	EXPECT_TRUE(c.calibrated->scoreRatio);
+	EXPECT_FALSE(c.calibrated->scoreRatio);
+	EXPECT_EQ(c.calibrated->denseRegionPersistence, 3);
 	EXPECT_TRUE(c.nms);
 	EXPECT_FALSE(c.staticRejection.has_value());
 	EXPECT_EQ(c.camera != nullptr, true);
@@ -141,13 +142,14 @@ TEST(DetectorConfig, EveryMeaninglessOrOutOfRangeSettingIsRefusedByName)
 			  c.nms = false;
 			  c.calibrated = CalibratedSettings();
 			  c.calibrated->boxVoting = false;
+			  c.calibrated->scoreRatio = true;
 		  },
 		  true },
 		{ "sparseDense only",
 		  [](DetectorConfig &c) {
 			  c.calibrated = CalibratedSettings();
 			  c.calibrated->sparseDense = false;
-			  c.calibrated->denseRegionPersistence = 3;
+			  c.calibrated->denseRegionPersistence = 5;
 		  },
 		  true },
 		{ "staticRejection.difference",

@@ -134,7 +134,7 @@ TEST(DetectorOptions, DefaultsAndTheConfigTheyMake)
 	EXPECT_EQ(c.calibrated->levels, PyramidLevels::Placed);
 	EXPECT_EQ(c.camera, &camera);
 	EXPECT_TRUE(c.calibrated->boxVoting);
-	EXPECT_TRUE(c.calibrated->scoreRatio);
+	EXPECT_FALSE(c.calibrated->scoreRatio);
 	EXPECT_FALSE(c.staticRejection.has_value());
 
 	o.resizeAt = ResizeChoice::Frame; // the thesis's resize: the toolbox's octaves

@@ -423,6 +423,10 @@ TEST_F(CliRunTest, JsonlToStdoutAndMaxFrames)
 	// Not quiet: the summary line on stderr counts the frames.
 	EXPECT_NE(r.err.find("summary: frames=2 "), std::string::npos) << r.err;
 	EXPECT_NE(r.err.find(" method=generic\n"), std::string::npos) << r.err;
+	// Without a camera, one line says how to get the calibrated method.
+	EXPECT_NE(r.err.find("calped-detect: no camera: the generic method runs; --calib"),
+		  std::string::npos)
+		<< r.err;
 }
 
 TEST_F(CliRunTest, ResizeInsideThePyramidIsTheDefault)
@@ -600,6 +604,19 @@ TEST_F(CliRunTest, CalibAloneRunsTheCalibratedMethod)
 		EXPECT_EQ(m[8], f[7]);
 		EXPECT_EQ(m[9], f[8]);
 	}
+	// Without --resize: chosen from the camera, and said (PETS people need about 2).
+	r = detect({ "--model", model_, "--calib", calib, "--csv", path("a.csv"), frame });
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	EXPECT_NE(r.err.find("calped-detect: resize auto: 2 ("), std::string::npos) << r.err;
+	EXPECT_EQ(r.err.find("no camera"), std::string::npos) << r.err;
+	EXPECT_EQ(readTextFile(path("a.csv")), readTextFile(path("c.csv")));
+	// --resize auto needs the camera; --range only means something with it.
+	r = detect({ "--model", model_, "--resize", "auto", frame });
+	EXPECT_EQ(r.exitCode, 2);
+	EXPECT_NE(r.err.find("--resize auto needs a calibration"), std::string::npos) << r.err;
+	r = detect({ "--model", model_, "--calib", calib, "--resize", "2", "--range", "20", frame });
+	EXPECT_EQ(r.exitCode, 2);
+	EXPECT_NE(r.err.find("--range applies to --resize auto only"), std::string::npos) << r.err;
 	// --method generic with the calibration: the generic method, boxes still placed.
 	r = detect({ "--model", model_, "--calib", calib, "--method", "generic", "--resize", "2", "--jsonl", "-",
 		     "--quiet", frame });

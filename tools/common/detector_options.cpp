@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "detector_options.h"
 
+#include <cstdio>
+
 #include "file_io.h"
 
 namespace calped::apps {
@@ -36,7 +38,11 @@ std::vector<OptionSpec> detectorOptionTable(DetectorFlags which)
 	if (which == DetectorFlags::All) {
 		t.push_back({ "method", "M", "generic or calibrated (default: calibrated with --calib,\n"
 					     "generic without; calibrated needs --calib)" });
-		t.push_back({ "resize", "R", "upscale by R before detecting, 0 < R <= 8 (default 1)" });
+		t.push_back({ "resize", "R", "upscale by R before detecting, 0 < R <= 8, or auto: the\n"
+					     "smallest that shows the smallest plausible person at the\n"
+					     "model's size (default: auto with --calib, else 1)" });
+		t.push_back({ "range", "M", "calibrated, --resize auto: look for people up to M metres\n"
+					    "from the camera (default 30)" });
 	}
 	t.push_back({ "resize-at", "WHERE", "pyramid (default): the resize inside the feature pyramid\n"
 					    "(the toolbox's nOctUp); frame: resize the frame first,\n"
@@ -51,6 +57,10 @@ std::vector<OptionSpec> detectorOptionTable(DetectorFlags which)
 		t.push_back({ "max-height", "H", "calibrated: tallest plausible person, metres (default 2.2)" });
 		t.push_back({ "no-nms", nullptr, "keep every window that passed the cascade" });
 		t.push_back({ "no-box-voting", nullptr, "calibrated: keep the best window's box (the thesis's)" });
+		t.push_back({ "score-ratio", nullptr, "calibrated: the thesis's second suppression step (score\n"
+						  "ratio against overlap; off by default)" });
+		t.push_back({ "region-frames", "N", "calibrated: a dense region lives N frames without a\n"
+						    "detection (default 3; 1 is the thesis's)" });
 		t.push_back({ "min-score", "S", "leave detections scoring below S out of the output" });
 	}
 	return t;
@@ -70,7 +80,13 @@ bool takeDetectorOption(const ParsedOption &o, DetectorOptions &out, std::string
 		else
 			error = badValue(o, "generic or calibrated");
 	} else if (n == "resize") {
-		numberIn(o, 0, true, 8, out.resize, error);
+		out.resizeGiven = true;
+		out.resizeAuto = o.value == "auto";
+		if (!out.resizeAuto)
+			numberIn(o, 0, true, 8, out.resize, error);
+	} else if (n == "range") {
+		numberIn(o, 0, true, 1e4, out.range, error);
+		out.rangeGiven = true;
 	} else if (n == "resize-at") {
 		if (o.value == "pyramid" || o.value == "frame")
 			out.resizeAt = o.value == "pyramid" ? ResizeChoice::Pyramid : ResizeChoice::Frame;
@@ -95,6 +111,10 @@ bool takeDetectorOption(const ParsedOption &o, DetectorOptions &out, std::string
 		out.noNms = true;
 	} else if (n == "no-box-voting") {
 		out.noBoxVoting = true;
+	} else if (n == "score-ratio") {
+		out.scoreRatio = true;
+	} else if (n == "region-frames") {
+		wholeIn(o, 1, 1000, out.regionFrames, error);
 	} else if (n == "min-score") {
 		if (!parseNumber(o.value, out.minScore))
 			error = badValue(o, "a number");
@@ -115,6 +135,18 @@ bool checkDetectorOptions(DetectorOptions &o, bool requireModel, DetectorFlags w
 		error = "--method calibrated needs --calib FILE";
 		return false;
 	}
+	if (which == DetectorFlags::All && !o.resizeGiven && o.calibrated())
+		o.resizeAuto = true;
+	if (o.resizeAuto && !o.calibrated()) {
+		error = "--resize auto needs a calibration (--calib FILE)";
+		return false;
+	}
+	if (o.rangeGiven && !o.resizeAuto) {
+		error = "--range applies to --resize auto only";
+		return false;
+	}
+	if (o.resizeAuto)
+		o.resize = 1.0; // chosen by resolveAutoResize(), always >= 1
 	if (o.resizeAt == ResizeChoice::Pyramid && o.resize < 1.0) {
 		error = "--resize-at pyramid needs --resize >= 1 (the pyramid only upscales); use --resize-at frame";
 		return false;
@@ -129,6 +161,8 @@ bool checkDetectorOptions(DetectorOptions &o, bool requireModel, DetectorFlags w
 		const char *flag = o.levels != LevelsChoice::Default ? "--levels"
 				   : o.heightsGiven            ? "--min-height/--max-height"
 				   : o.noBoxVoting             ? "--no-box-voting"
+				   : o.scoreRatio              ? "--score-ratio"
+				   : o.regionFrames != 0       ? "--region-frames"
 							       : nullptr;
 		if (flag) {
 			error = std::string(flag) + " applies to the calibrated method only (give --calib FILE)";
@@ -197,17 +231,56 @@ DetectorConfig makeDetectorConfig(const DetectorOptions &o, int width, int heigh
 		cal.minPersonHeight = o.minHeight;
 		cal.maxPersonHeight = o.maxHeight;
 		cal.boxVoting = !o.noBoxVoting && !o.noNms;
-		cal.scoreRatio = !o.noNms;
+		cal.scoreRatio = o.scoreRatio && !o.noNms;
+		if (o.regionFrames)
+			cal.denseRegionPersistence = int(o.regionFrames);
 		config.calibrated = cal;
 	}
 	return config;
 }
 
-bool createDetector(const Model &model, const DetectorOptions &options, int width, int height,
-		    const CameraModel *camera, std::unique_ptr<Detector> &out, std::string &error)
+bool resolveAutoResize(DetectorOptions &o, const Model &model, int width, int height,
+		       const CameraModel *camera, std::string &note, std::string &error)
 {
+	note.clear();
+	if (!o.resizeAuto)
+		return true;
+	if (!camera) {
+		error = "--resize auto needs a calibration";
+		return false;
+	}
+	AutoResizeSettings settings;
+	settings.minPersonHeight = o.minHeight;
+	settings.range = o.range;
+	AutoResize chosen;
+	const Status st = chooseResize(model.params, *camera, width, height, settings, chosen);
+	if (!st.ok()) {
+		error = std::string("--resize auto: ") + st.message() + " (give --resize R)";
+		return false;
+	}
+	o.resize = chosen.resize;
+	char text[200];
+	std::snprintf(text, sizeof text,
+		      "resize auto: %.3g (the smallest %.2f m person within %.0f m is %.0f px tall, "
+		      "feet on row %.0f, %.1f m away; the model's person is %.0f px)",
+		      chosen.resize, o.minHeight, o.range, chosen.smallestPersonPixels, chosen.footRow,
+		      chosen.distance, double(model.params.modelDsH));
+	note = text;
+	return true;
+}
+
+bool createDetector(const Model &model, const DetectorOptions &options, int width, int height,
+		    const CameraModel *camera, std::unique_ptr<Detector> &out, std::string &error,
+		    std::string *note)
+{
+	DetectorOptions resolved = options;
+	std::string resizeNote;
+	if (!resolveAutoResize(resolved, model, width, height, camera, resizeNote, error))
+		return false;
+	if (note)
+		*note = resizeNote;
 	const Status st =
-		Detector::create(model, makeDetectorConfig(options, width, height, camera), out);
+		Detector::create(model, makeDetectorConfig(resolved, width, height, camera), out);
 	if (!st.ok()) {
 		error = "cannot set up the detector for " + std::to_string(width) + "x" +
 			std::to_string(height) + " frames: " + st.message();

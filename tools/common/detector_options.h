@@ -24,6 +24,10 @@ struct DetectorOptions {
 	std::string calibPath; // --calib FILE
 	MethodChoice method = MethodChoice::Default;
 	double resize = 1.0;
+	bool resizeGiven = false;
+	bool resizeAuto = false; // --resize auto, the default with --calib (checkDetectorOptions)
+	double range = 30.0;     // --range, metres: --resize auto's region of interest
+	bool rangeGiven = false;
 	ResizeChoice resizeAt = ResizeChoice::Default;
 	LevelsChoice levels = LevelsChoice::Default;
 	bool rejectStatic = false;
@@ -31,6 +35,8 @@ struct DetectorOptions {
 	bool heightsGiven = false;
 	bool noNms = false;
 	bool noBoxVoting = false;
+	bool scoreRatio = false;
+	long regionFrames = 0; // 0: the library's default
 	double minScore = -INFINITY; // --min-score: output filter, not a detector setting
 
 	// What the defaults resolve to (after checkDetectorOptions).
@@ -67,14 +73,26 @@ bool loadModelFile(const std::string &path, Model &model, std::string &error);
 bool loadCalibrationFile(const std::string &path, CameraModel &camera, std::string &error);
 bool loadDetectorInputs(const DetectorOptions &options, DetectorInputs &out, std::string &error);
 
+// What the programs print when they run without a camera.
+constexpr const char *kGenericHint =
+	"no camera: the generic method runs; --calib FILE runs the calibrated method, "
+	"faster and with fewer false positives (docs/calibration.md)";
+
 // THE DetectorConfig of the programs: frames up to width x height, `camera` (may be null
 // for the generic method) must outlive Detector::create.
 DetectorConfig makeDetectorConfig(const DetectorOptions &options, int width, int height,
 				  const CameraModel *camera);
 
-// Detector::create with makeDetectorConfig, the error naming the frame size.
+// --resize auto: sets options.resize from the camera (chooseResize, calped/auto_resize.h)
+// and fills `note` with the line the programs print at start-up; nothing without it.
+bool resolveAutoResize(DetectorOptions &options, const Model &model, int width, int height,
+		       const CameraModel *camera, std::string &note, std::string &error);
+
+// Detector::create with makeDetectorConfig (after resolveAutoResize), the error naming the
+// frame size; `note`, when given, receives resolveAutoResize's line.
 bool createDetector(const Model &model, const DetectorOptions &options, int width, int height,
-		    const CameraModel *camera, std::unique_ptr<Detector> &out, std::string &error);
+		    const CameraModel *camera, std::unique_ptr<Detector> &out, std::string &error,
+		    std::string *note = nullptr);
 
 // --min-score: the detections at or above the threshold, in `kept` (reused: its capacity
 // stays, so it allocates only while growing). Returns `all` itself without a threshold.

@@ -207,9 +207,13 @@ int run(const Options &opt)
 	if (!loadDetectorInputs(opt.detector, loaded, error))
 		return fail(kExitRuntime, error);
 	std::unique_ptr<Detector> detector;
+	std::string note;
 	if (!createDetector(loaded.model, opt.detector, maxW, maxH,
-			    loaded.hasCamera ? &loaded.camera : nullptr, detector, error))
+			    loaded.hasCamera ? &loaded.camera : nullptr, detector, error, &note))
 		return fail(kExitRuntime, error);
+	if (!opt.quiet && !note.empty())
+		std::fprintf(stderr, "%s: %s\n", kProgram.name, note.c_str());
+
 	const char *method = opt.detector.methodName();
 
 	Outputs out;
@@ -285,8 +289,11 @@ int run(const Options &opt)
 
 	if (!out.csv.close(error) || !out.mot.close(error) || !out.jsonl.close(error))
 		return fail(kExitRuntime, error);
-	if (!opt.quiet)
+	if (!opt.quiet) {
 		stats.printSummary(method);
+		if (!loaded.hasCamera)
+			std::fprintf(stderr, "%s: %s\n", kProgram.name, kGenericHint);
+	}
 	return 0;
 }
 

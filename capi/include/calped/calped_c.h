@@ -180,9 +180,9 @@ typedef struct calped_config {
 	/* Calibrated settings (calped::CalibratedSettings). */
 	double min_person_height, max_person_height; /* metres, default 1.4 and 2.2 */
 	int sparse_dense;                            /* default 1 */
-	int dense_region_persistence;                /* frames, default 1 */
+	int dense_region_persistence;                /* frames, default 3 */
 	int max_dense_regions;                       /* default 256 */
-	int score_ratio;                             /* default 1 */
+	int score_ratio;                             /* default 0 */
 	int box_voting;                              /* default 1 */
 	int levels;                                  /* a calped_levels, default PLACED */
 	int placed_level_reach;                      /* 1..16, default 5 */

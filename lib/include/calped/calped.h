@@ -2,6 +2,7 @@
 // Umbrella header of the calped core library.
 #pragma once
 
+#include <calped/auto_resize.h>
 #include <calped/calibration.h>
 #include <calped/detector.h>
 #include <calped/image.h>

@@ -48,13 +48,15 @@ struct CalibratedSettings {
 	// around its detections. false evaluates every plausible window instead.
 	bool sparseDense = true;
 	// Thesis 3.4 (sparseDense): a dense region is removed after this many frames in a row
-	// without a detection inside (1 reproduces the thesis); at most maxDenseRegions
+	// without a detection inside (1 reproduces the thesis; more keeps a person whom the
+	// sparse grid misses for a frame or two, docs/calibrated.md); at most maxDenseRegions
 	// regions, those beyond are not created and are counted (FrameStats).
-	int denseRegionPersistence = 1;
+	int denseRegionPersistence = 3;
 	int maxDenseRegions = 256;
 	// Thesis 3.3, the second suppression step: after NMS, a box overlapping a better one
-	// by more than the ratio of their scores is dropped.
-	bool scoreRatio = true;
+	// by more than the ratio of their scores is dropped. Off by default: it also drops
+	// people partly hidden by a better-scoring neighbour (docs/calibrated.md).
+	bool scoreRatio = false;
 	// Beyond the thesis: after suppression, each box moves to the score^4-weighted mean of
 	// the windows overlapping it (IoU > 0.6), which places it better than the single best
 	// window (docs/calibrated.md). false: the thesis's boxes.
