@@ -3,6 +3,7 @@
 #pragma once
 
 #include <calped/calibration.h>
+#include <calped/self_calibration.h>
 #include <calped/detector.h>
 #include <calped/image.h>
 #include <calped/model.h>
