@@ -3,7 +3,6 @@
 // and head points of confident whole detections and fits the camera (self_calibration.h).
 // Writes OpenCV YAML only when the fit succeeds. See docs/calibration.md.
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -164,8 +163,6 @@ int run(const Options &opt)
 	sc.personHeight = opt.personHeight;
 	sc.principalU = opt.principalU;
 	sc.principalV = opt.principalV;
-	if (const char *e = std::getenv("SC_PRIOR")) { sc.focalPrior = std::atof(e); sc.focalPriorLogSd = std::atof(std::getenv("SC_SD")); }
-	if (const char *e = std::getenv("SC_MINH")) sc.minBoxHeight = std::atof(e);
 	SelfCalibrator calibrator(sc);
 	if (!calibrator.status().ok())
 		return fail(kExitRuntime, calibrator.status().message());

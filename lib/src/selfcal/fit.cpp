@@ -381,6 +381,26 @@ SelfCalibrationVerdict fitSelfCalibration(const std::vector<PersonObservation> &
 	for (const PersonObservation &o : obs)
 		if (line.a > 0 && o.footV < -(line.b * o.footU + line.c) / line.a)
 			aboveHorizon++;
+	if ((growth < 0.1 || aboveHorizon > n / 5) && n >= 3 * config.minInliers) {
+		// Unless the first and last thirds each look like a proper camera on their own: then
+		// it is the camera that moved between them (a pan mixes their rows).
+		auto thirdGrows = [&](int first, int last) {
+			const LinearModel m = robustLinear(obs, first, last, 0.15, nullptr);
+			std::vector<double> rows, ph;
+			for (int i = first; i < last; i++) {
+				rows.push_back(obs[size_t(i)].footV);
+				ph.push_back(obs[size_t(i)].footV - obs[size_t(i)].headV);
+			}
+			const double g = m.a * (quantile(rows, 0.9) - quantile(rows, 0.1)) / quantile(ph, 0.5);
+			return m.inliers >= config.minInliers / 2 && g >= 0.1 ? -(m.b * cu + m.c) / m.a : NAN;
+		};
+		const double early = thirdGrows(0, n / 3), late = thirdGrows(n - n / 3, n);
+		if (std::isfinite(early) && std::isfinite(late) && std::abs(early - late) > 0.05 * height)
+			return verdict(out, V::CameraMoving,
+				       format("the camera moved: the first and last third of the observations each "
+					      "fit a camera (horizon rows %.0f and %.0f) but not together (box "
+					      "heights change by %.0f%% over all)", early, late, 100 * growth));
+	}
 	if (growth < 0.1 || aboveHorizon > n / 5)
 		return verdict(out, V::LookingStraightDown,
 			       format("the camera looks (nearly) straight down: box heights change by %.0f%% "
