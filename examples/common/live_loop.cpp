@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "live_loop.h"
 
+#include "frame_detector.h"
+
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -48,14 +50,13 @@ void installStopHandlers()
 // frame size, at) the first frame.
 struct DetectorSetup {
 	apps::DetectorInputs inputs;
-	std::unique_ptr<Detector> detector;
+	apps::FrameDetector detector;
 
 	bool create(const LiveOptions &options, int width, int height, std::string &error)
 	{
 		std::string note;
-		if (!apps::createDetector(inputs.model, options.detector, width, height,
-					  inputs.hasCamera ? &inputs.camera : nullptr, detector, error,
-					  &note))
+		if (!detector.create(inputs.model, options.detector, width, height,
+				     inputs.hasCamera ? &inputs.camera : nullptr, error, &note))
 			return false;
 		if (!note.empty())
 			std::fprintf(stderr, "%s\n", note.c_str());
@@ -153,13 +154,13 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 			exitCode = cliFail(program, kExitRuntime, std::string(source.name()) + ": " + st.message());
 			break;
 		}
-		if (!setup.detector && !setup.create(options, frame.image.width, frame.image.height, error)) {
+		if (!setup.detector.valid() && !setup.create(options, frame.image.width, frame.image.height, error)) {
 			exitCode = cliFail(program, kExitRuntime, error);
 			break;
 		}
 
 		Detections dets;
-		st = setup.detector->detect(frame.image, dets);
+		st = setup.detector.detect(frame.image, dets);
 		if (st.code() == ErrorCode::ImageTooSmall) {
 			dets = Detections(); // no window fits: no pedestrians, not a failure
 		} else if (!st.ok()) {
@@ -172,7 +173,11 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 		record.timestampNs = frame.timestampNs;
 		record.width = frame.image.width;
 		record.height = frame.image.height;
-		record.ms = st.ok() ? setup.detector->lastStats().msTotal : 0.0;
+		record.ms = st.ok() ? setup.detector.lastStats().msTotal : 0.0;
+		record.method = setup.detector.methodName();
+		record.cameraEstimate = setup.detector.cameraEstimate();
+		if (const std::string change = setup.detector.estimateChange(); !change.empty())
+			std::fprintf(stderr, "%s\n", change.c_str());
 		apps::writeJsonFrame(stdout, record, dets);
 		std::fflush(stdout); // live output: a reader sees each frame as it is processed
 		if (!options.overlayDir.empty() && processed % static_cast<uint64_t>(options.overlayEvery) == 0 &&

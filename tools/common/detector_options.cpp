@@ -33,7 +33,9 @@ std::vector<OptionSpec> detectorOptionTable(DetectorFlags which)
 	std::vector<OptionSpec> t = {
 		{ "model", "BLOB", "calped model blob (.cpm, made by calped-convert)" },
 		{ "calib", "FILE", "camera calibration (Tsai XML, Town Centre .ci, plain P, OpenCV\n"
-				   "YAML); selects the calibrated method unless --method generic" },
+				   "YAML); selects the calibrated method unless --method generic;\n"
+				   "auto: estimated from the people found (the generic method\n"
+				   "runs until then)" },
 	};
 	if (which == DetectorFlags::All) {
 		t.push_back({ "method", "M", "generic or calibrated (default: calibrated with --calib,\n"
@@ -135,8 +137,28 @@ bool checkDetectorOptions(DetectorOptions &o, bool requireModel, DetectorFlags w
 		error = "--method calibrated needs --calib FILE";
 		return false;
 	}
-	if (which == DetectorFlags::All && !o.resizeGiven && o.calibrated())
+	if (o.calibAuto()) {
+		if (which != DetectorFlags::All) {
+			error = "--calib auto is for calped-detect and the live programs";
+			return false;
+		}
+		if (o.method != MethodChoice::Default) {
+			error = "--calib auto runs the generic method, then the calibrated one: no --method";
+			return false;
+		}
+		if (o.levels == LevelsChoice::Toolbox || o.resizeAt == ResizeChoice::Frame) {
+			error = "--calib auto: the calibrated method's resize is chosen from the camera, "
+				"inside the pyramid with placed levels (no --levels toolbox or --resize-at frame)";
+			return false;
+		}
+		// --resize is the generic method's while collecting; the calibrated method's is
+		// chosen from the estimated camera.
+		if (!o.resizeGiven || o.resizeAuto)
+			o.resize = 2.0;
+		o.resizeAuto = false;
+	} else if (which == DetectorFlags::All && !o.resizeGiven && o.calibrated()) {
 		o.resizeAuto = true;
+	}
 	if (o.resizeAuto && !o.calibrated()) {
 		error = "--resize auto needs a calibration (--calib FILE)";
 		return false;
@@ -207,7 +229,7 @@ bool loadDetectorInputs(const DetectorOptions &options, DetectorInputs &out, std
 {
 	if (!loadModelFile(options.model, out.model, error))
 		return false;
-	out.hasCamera = !options.calibPath.empty();
+	out.hasCamera = !options.calibPath.empty() && !options.calibAuto();
 	return !out.hasCamera || loadCalibrationFile(options.calibPath, out.camera, error);
 }
 

@@ -44,6 +44,8 @@ struct DetectorOptions {
 	bool resizeInPyramid() const;
 	bool placedLevels() const;
 	const char *methodName() const { return calibrated() ? "calibrated" : "generic"; }
+	// --calib auto: the camera estimated from the people the generic method finds.
+	bool calibAuto() const { return calibPath == "auto"; }
 };
 
 // Which flags a program takes: the live programs and calped-detect take them all;

@@ -116,6 +116,8 @@ void writeJsonFrame(FILE *f, const JsonFrame &fr, const Detections &detections)
 {
 	std::fprintf(f, "{\"frame\":%lld,\"method\":", fr.frame);
 	writeJsonString(f, fr.method, std::strlen(fr.method));
+	if (fr.cameraEstimate >= 0)
+		std::fprintf(f, ",\"camera_estimate\":%d", fr.cameraEstimate);
 	if (fr.file) {
 		std::fputs(",\"file\":", f);
 		writeJsonString(f, fr.file, std::strlen(fr.file));

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // The one JSON frame record, written by calped-detect (--jsonl), calped-eval (--frames-jsonl)
 // and the live programs (standard output), one object per line (docs/cli.md):
-//   {"frame":N,"method":"calibrated"[,"file":"..."][,"timestamp_ns":T],"width":W,
+//   {"frame":N,"method":"calibrated"[,"camera_estimate":E][,"file":"..."][,"timestamp_ns":T],"width":W,
 //    "height":H,"ms":M,"detections":[{"x":..,"y":..,"w":..,"h":..,"score":..
 //    [,"ground_x":..,"ground_y":..][,"world_height":..]},...]}
 // Strings are JSON-escaped (quotes, backslashes, every control character) and bytes that
@@ -24,6 +24,7 @@ struct JsonFrame {
 	int64_t timestampNs = -1;   // a live source's timestamp: written when >= 0
 	int width = 0, height = 0;
 	double ms = 0; // the detector's own time, FrameStats::msTotal
+	int cameraEstimate = -1; // --calib auto: the camera estimate used (0: none yet); written when >= 0
 };
 
 // One line, newline included.

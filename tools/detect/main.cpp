@@ -14,6 +14,7 @@
 #include "cli_error.h"
 #include "detector_options.h"
 #include "file_io.h"
+#include "frame_detector.h"
 #include "frame_list.h"
 #include "image_io.h"
 #include "json_frame.h"
@@ -148,8 +149,8 @@ struct Outputs {
 	std::string overlayDir;
 	long overlayEvery = 1;
 
-	bool write(long frame, const std::string &path, const char *method, const RgbImage &image,
-		   double ms, const Detections &dets, std::string &error)
+	bool write(long frame, const std::string &path, const FrameDetector &detector,
+		   const RgbImage &image, double ms, const Detections &dets, std::string &error)
 	{
 		if (csv.isOpen())
 			writeCsvRows(csv.get(), frame, dets);
@@ -158,7 +159,8 @@ struct Outputs {
 		if (jsonl.isOpen()) {
 			JsonFrame record;
 			record.frame = frame;
-			record.method = method;
+			record.method = detector.methodName();
+			record.cameraEstimate = detector.cameraEstimate();
 			record.file = path.c_str();
 			record.width = image.width;
 			record.height = image.height;
@@ -206,15 +208,14 @@ int run(const Options &opt)
 	DetectorInputs loaded;
 	if (!loadDetectorInputs(opt.detector, loaded, error))
 		return fail(kExitRuntime, error);
-	std::unique_ptr<Detector> detector;
+	FrameDetector detector;
 	std::string note;
-	if (!createDetector(loaded.model, opt.detector, maxW, maxH,
-			    loaded.hasCamera ? &loaded.camera : nullptr, detector, error, &note))
+	if (!detector.create(loaded.model, opt.detector, maxW, maxH,
+			     loaded.hasCamera ? &loaded.camera : nullptr, error, &note))
 		return fail(kExitRuntime, error);
 	if (!opt.quiet && !note.empty())
 		std::fprintf(stderr, "%s: %s\n", kProgram.name, note.c_str());
 
-	const char *method = opt.detector.methodName();
 
 	Outputs out;
 	out.overlayDir = opt.overlayDir;
@@ -260,7 +261,7 @@ int run(const Options &opt)
 			frame++;
 
 			Detections dets;
-			Status st = detector->detect(
+			Status st = detector.detect(
 				ImageView::rgb8(image.pixels.data(), image.width, image.height), dets);
 			if (st.code() == ErrorCode::ImageTooSmall) {
 				// No window fits: the honest answer is "no pedestrians", not a failed run.
@@ -271,10 +272,12 @@ int run(const Options &opt)
 			} else if (!st.ok()) {
 				return fail(kExitRuntime, frameLabel(frame, in.path) + ": " + st.message());
 			}
-			const double ms = st.ok() ? detector->lastStats().msTotal : 0.0;
+			const double ms = st.ok() ? detector.lastStats().msTotal : 0.0;
 			dets = filterByScore(dets, opt.detector.minScore, kept);
-			if (!out.write(frame, in.path, method, image, ms, dets, error))
+			if (!out.write(frame, in.path, detector, image, ms, dets, error))
 				return fail(kExitRuntime, error);
+			if (const std::string change = detector.estimateChange(); !change.empty() && !opt.quiet)
+				std::fprintf(stderr, "%s: frame %ld: %s\n", kProgram.name, frame, change.c_str());
 
 			stats.addFrame(ms, dets.count);
 			if (!opt.quiet && stats.progressDue())
@@ -290,7 +293,7 @@ int run(const Options &opt)
 	if (!out.csv.close(error) || !out.mot.close(error) || !out.jsonl.close(error))
 		return fail(kExitRuntime, error);
 	if (!opt.quiet) {
-		stats.printSummary(method);
+		stats.printSummary(opt.detector.calibAuto() ? "auto" : opt.detector.methodName());
 		if (!loaded.hasCamera)
 			std::fprintf(stderr, "%s: %s\n", kProgram.name, kGenericHint);
 	}

@@ -16,6 +16,9 @@ struct AutoResizeSettings {
 	// The region of interest: ground within this distance of the point below the camera,
 	// metres (> 0). Beyond it people are not looked for at their own size.
 	double range = 30.0;
+	// And only feet on this row or below (pixels; the default, -infinity, is every row):
+	// self-calibration sets it to where it saw people.
+	double minFootRow = -__builtin_inf();
 	// The result is kept within [minResize, maxResize] (0 < min <= max <= 8).
 	double minResize = 1.0;
 	double maxResize = 4.0;

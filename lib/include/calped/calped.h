@@ -4,6 +4,7 @@
 
 #include <calped/auto_resize.h>
 #include <calped/calibration.h>
+#include <calped/self_calibrating_detector.h>
 #include <calped/self_calibration.h>
 #include <calped/detector.h>
 #include <calped/image.h>

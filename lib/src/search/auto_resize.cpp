@@ -14,7 +14,7 @@ Status chooseResize(const ModelParams &params, const CameraModel &camera, int wi
 	if (width < 1 || height < 1)
 		return Status::error(ErrorCode::InvalidArgument, "automatic resize: frame %dx%d", width,
 				     height);
-	if (!(s.minPersonHeight > 0 && s.minPersonHeight < 10) || !(s.range > 0) ||
+	if (!(s.minPersonHeight > 0 && s.minPersonHeight < 10) || !(s.range > 0) || std::isnan(s.minFootRow) ||
 	    !(s.minResize > 0 && s.minResize <= s.maxResize && s.maxResize <= 8))
 		return Status::error(ErrorCode::InvalidArgument,
 				     "automatic resize: person height %g m, range %g m, resize %g..%g",
@@ -24,7 +24,7 @@ Status chooseResize(const ModelParams &params, const CameraModel &camera, int wi
 	// the box of a person of the smallest height standing there, if it lies in the frame.
 	bool found = false;
 	const int step = 4;
-	for (int v = height - 1; v >= 0; v -= step) {
+	for (int v = height - 1; v >= 0 && v >= s.minFootRow; v -= step) {
 		for (int u = 0; u < width + step - 1; u += step) {
 			const Eigen::Vector2d foot(std::min(u, width - 1), v);
 			Eigen::Vector2d ground;
@@ -50,8 +50,8 @@ Status chooseResize(const ModelParams &params, const CameraModel &camera, int wi
 	if (!found)
 		return Status::error(ErrorCode::InvalidArgument,
 				     "automatic resize: no person of %g m fits in the %dx%d frame within %g m "
-				     "of the camera",
-				     s.minPersonHeight, width, height, s.range);
+				     "of the camera (feet from row %g)",
+				     s.minPersonHeight, width, height, s.range, s.minFootRow);
 	const double raw = params.modelDsH / out.smallestPersonPixels;
 	const int perOctave = std::max(1, int(params.nPerOct));
 	// Rounded up to the scale step, so that the smallest person is at least the model's height.
