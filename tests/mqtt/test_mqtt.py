@@ -279,3 +279,57 @@ def test_three_cameras_survive_a_broker_restart(broker, folder):
             assert c["dropped"] == 0
     assert results["cam1"]["dropped"] > 0, "camera 1's one-message queue never filled while the broker was away"
     print("broker restarts %d\n%s" % (broker.restarts, "\n".join(report)))
+
+
+def binding_env(folder):
+    """A PYTHONPATH with the binding's sources and this build's _build.py, and the library
+    of this build: the binding as ground_plan.py imports it, without installing."""
+    if SANITIZED:
+        pytest.skip("sanitizer build: ctypes would need libasan preloaded (tests/python skips too)")
+    built = os.path.join(BUILD, "python", "_build.py")
+    library = [f for f in os.listdir(os.path.join(BUILD, "capi")) if f.startswith("libcalped_c.so.")] \
+        if os.path.isdir(os.path.join(BUILD, "capi")) else []
+    if not os.path.exists(built) or not library:
+        pytest.skip("the Python binding and libcalped_c are not built here")
+    try:
+        import numpy  # noqa: F401
+    except ImportError:
+        pytest.skip("no numpy (Debian: apt-get install python3-numpy)")
+    package = os.path.join(folder, "py", "calped")
+    os.makedirs(package)
+    for name in ("__init__.py", "_capi.py"):
+        shutil.copy(os.path.join(SOURCE, "python", "calped", name), package)
+    shutil.copy(built, package)
+    return dict(os.environ, PYTHONPATH=os.path.join(folder, "py"),
+                CALPED_LIBRARY=os.path.abspath(os.path.join(BUILD, "capi", sorted(library)[0])))
+
+
+def test_ground_plan_example_draws_real_messages(broker, folder):
+    """examples/fleet/ground_plan.py over messages two calped-detect cameras published."""
+    detect = program("calped-detect")
+    frames_needed(2)
+    if not os.path.exists(CALIB):
+        pytest.skip("needs ../shared's PETS calibration View_001.xml")
+    env = binding_env(folder)
+    sub = Subscriber(broker, folder)
+    for cam in ("north", "south"):
+        r = subprocess.run([detect, "--model", model(), "--calib", CALIB, "--resize", "2", "--max-frames", "2",
+                            "--mqtt", broker.url("calped/%s/detections" % cam), "--camera-id", cam, FRAMES],
+                           capture_output=True, text=True, timeout=300)
+        assert r.returncode == 0, r.stderr
+    deadline = time.monotonic() + 20
+    while len(sub.messages()) < 4 and time.monotonic() < deadline:
+        time.sleep(0.1)
+    sub.stop()
+    with open(sub.path, "rb") as f:
+        lines = f.read()
+    plan = subprocess.run([sys.executable, os.path.join(SOURCE, "examples", "fleet", "ground_plan.py"),
+                           "--stdin", "--once"], input=lines, capture_output=True, env=env, timeout=60)
+    assert plan.returncode == 0, plan.stderr.decode()
+    text = plan.stdout.decode()
+    last = {m["camera"]: m for _, m in sub.messages()}
+    for letter, cam in (("A", "north"), ("B", "south")):
+        people = last[cam]["detections"]
+        assert "%s %s: frame 2, %d people" % (letter, cam, len(people)) in text, text
+    rows = [line for line in text.splitlines() if line.startswith("|")]
+    assert any("A" in row or "*" in row for row in rows), text
