@@ -34,6 +34,12 @@ packages=(
 	gstreamer1.0-plugins-base
 	gstreamer1.0-plugins-good
 	gstreamer1.0-libav
+	# MQTT publishing (mqtt/) and its tests against a real broker (tests/mqtt); paho for
+	# the fleet's ground-plan subscriber (examples/fleet)
+	libmosquitto-dev
+	mosquitto
+	mosquitto-clients
+	python3-paho-mqtt
 )
 packages+=("$@")
 

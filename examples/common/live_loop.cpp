@@ -17,6 +17,7 @@
 #include "cli_error.h"
 #include "detector_options.h"
 #include "json_frame.h"
+#include "mqtt_options.h"
 #include "overlay_writer.h"
 
 namespace calped {
@@ -125,6 +126,10 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 	OverlayWriter overlay;
 	if (!options.overlayDir.empty() && !overlay.open(options.overlayDir, error))
 		return cliFail(program, kExitRuntime, error);
+	// Before the source starts: an unreachable broker is an error at start.
+	mqtt::FramePublisher publisher;
+	if (!apps::openMqtt(options.mqtt, publisher, error))
+		return cliFail(program, kExitRuntime, error);
 
 	installStopHandlers();
 	Status st = source.start();
@@ -180,6 +185,8 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 			std::fprintf(stderr, "%s\n", change.c_str());
 		apps::writeJsonFrame(stdout, record, dets);
 		std::fflush(stdout); // live output: a reader sees each frame as it is processed
+		if (publisher.isOpen())
+			publisher.publish(record, dets); // a dropped message is counted, the loop goes on
 		if (!options.overlayDir.empty() && processed % static_cast<uint64_t>(options.overlayEvery) == 0 &&
 		    !overlay.write(frame, dets, error)) {
 			if (error.compare(0, 8, "overlays") != 0) {
@@ -196,6 +203,7 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 			break;
 	}
 	source.stop();
+	apps::closeMqtt(publisher, program, options.quiet);
 	if (std::fflush(stdout) != 0 || std::ferror(stdout))
 		exitCode = cliFail(program, kExitRuntime, "cannot write standard output");
 	if (!options.quiet)

@@ -9,19 +9,19 @@ std::vector<apps::OptionSpec> liveOptionTable()
 	const std::vector<apps::OptionSpec> t = apps::joinOptions(
 		{ { nullptr, nullptr, "detector and output options:" } },
 		apps::detectorOptionTable(apps::DetectorFlags::All));
-	return apps::joinOptions(t, {
+	return apps::joinOptions(apps::joinOptions(t, {
 		{ "overlay", "DIR", "save DIR/NNNNNN.png (frame id) with the detections drawn" },
 		{ "overlay-every", "K", "overlay every K-th processed frame (default 1)" },
 		{ "frames", "N", "stop after N processed frames, exit status 0" },
 		{ "timeout", "MS", "wait per frame before counting a timeout (default 2000)" },
 		{ "stats-every", "S", "seconds between stats lines on stderr (default 5)" },
 		{ "quiet", nullptr, "no stats lines" },
-	});
+	}), apps::mqttOptionTable());
 }
 
 bool takeLiveOption(const apps::ParsedOption &o, LiveOptions &out, std::string &error)
 {
-	if (apps::takeDetectorOption(o, out.detector, error))
+	if (apps::takeDetectorOption(o, out.detector, error) || apps::takeMqttOption(o, out.mqtt, error))
 		return true;
 	const std::string &n = o.name;
 	if (n == "overlay")
@@ -43,7 +43,8 @@ bool takeLiveOption(const apps::ParsedOption &o, LiveOptions &out, std::string &
 
 bool checkLiveOptions(LiveOptions &options, std::string &error)
 {
-	return apps::checkDetectorOptions(options.detector, true, apps::DetectorFlags::All, error);
+	return apps::checkDetectorOptions(options.detector, true, apps::DetectorFlags::All, error) &&
+	       apps::checkMqttOptions(options.mqtt, error);
 }
 
 int parseLiveCommandLine(const apps::ProgramInfo &program, const std::vector<apps::OptionSpec> &own,

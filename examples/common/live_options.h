@@ -9,6 +9,7 @@
 
 #include "args.h"
 #include "detector_options.h"
+#include "mqtt_options.h"
 #include "program.h"
 
 namespace calped {
@@ -22,6 +23,7 @@ struct LiveOptions {
 	double statsEvery = 5.0;   // --stats-every S: seconds between stats lines on stderr
 	long timeoutMs = 2000;     // --timeout MS: wait per frame before counting a timeout
 	bool quiet = false;        // --quiet: no stats lines
+	apps::MqttOptions mqtt;    // --mqtt URL, --mqtt-queue N, --camera-id ID
 };
 
 // The common options' table entries (with a heading), for the example's table.

@@ -18,6 +18,7 @@
 #include "frame_list.h"
 #include "image_io.h"
 #include "json_frame.h"
+#include "mqtt_options.h"
 #include "overlay.h"
 #include "program.h"
 #include "progress.h"
@@ -51,12 +52,13 @@ struct Options {
 	long overlayEvery = 1;
 	long maxFrames = 0; // 0 means every frame
 	bool quiet = false;
+	MqttOptions mqtt;
 	std::vector<std::string> inputs;
 };
 
 std::vector<OptionSpec> optionTable()
 {
-	return joinOptions(detectorOptionTable(DetectorFlags::All), {
+	return joinOptions(joinOptions(detectorOptionTable(DetectorFlags::All), {
 		{ "csv", "FILE", "write detections as CSV: frame,x,y,w,h,score,ground_x,ground_y,\n"
 				 "world_height (world fields empty without --calib)" },
 		{ "mot", "FILE", "write MOTChallenge detections: frame,-1,x,y,w,h,score,gx,gy,height\n"
@@ -66,7 +68,7 @@ std::vector<OptionSpec> optionTable()
 		{ "overlay-every", "K", "overlay only frames 1, 1+K, 1+2K, ... (default 1)" },
 		{ "max-frames", "N", "stop after the first N frames" },
 		{ "quiet", nullptr, "no progress, warnings or summary on standard error" },
-	});
+	}), mqttOptionTable());
 }
 
 // -1 to go on, else the exit status.
@@ -75,7 +77,8 @@ int parseOptions(int argc, const char *const *argv, Options &out)
 	ParsedArgs args;
 	const int rc = parseCommandLine(kProgram, optionTable(), true, argc, argv, args,
 					[&](const ParsedOption &o, std::string &e) {
-						return takeDetectorOption(o, out.detector, e);
+						return takeDetectorOption(o, out.detector, e) ||
+						       takeMqttOption(o, out.mqtt, e);
 					});
 	if (rc >= 0)
 		return rc;
@@ -97,7 +100,8 @@ int parseOptions(int argc, const char *const *argv, Options &out)
 			return usageError(kProgram, error);
 	}
 	out.inputs = args.positional;
-	if (!checkDetectorOptions(out.detector, true, DetectorFlags::All, error))
+	if (!checkDetectorOptions(out.detector, true, DetectorFlags::All, error) ||
+	    !checkMqttOptions(out.mqtt, error))
 		return usageError(kProgram, error);
 	if (out.inputs.empty())
 		return usageError(kProgram, "no input images, folders or videos given (try --help)");
@@ -146,6 +150,7 @@ std::string frameLabel(long frame, const std::string &path)
 // Writes one frame's outputs; false with `error` when an overlay cannot be written.
 struct Outputs {
 	OutputFile csv, mot, jsonl;
+	mqtt::FramePublisher mqtt; // --mqtt: one message per frame, the JSON Lines record
 	std::string overlayDir;
 	long overlayEvery = 1;
 
@@ -156,17 +161,18 @@ struct Outputs {
 			writeCsvRows(csv.get(), frame, dets);
 		if (mot.isOpen())
 			writeMotRows(mot.get(), frame, dets);
-		if (jsonl.isOpen()) {
-			JsonFrame record;
-			record.frame = frame;
-			record.method = detector.methodName();
-			record.cameraEstimate = detector.cameraEstimate();
-			record.file = path.c_str();
-			record.width = image.width;
-			record.height = image.height;
-			record.ms = ms;
+		JsonFrame record;
+		record.frame = frame;
+		record.method = detector.methodName();
+		record.cameraEstimate = detector.cameraEstimate();
+		record.file = path.c_str();
+		record.width = image.width;
+		record.height = image.height;
+		record.ms = ms;
+		if (jsonl.isOpen())
 			writeJsonFrame(jsonl.get(), record, dets);
-		}
+		if (mqtt.isOpen())
+			mqtt.publish(record, dets); // a dropped message is counted, the run goes on
 		if (!overlayDir.empty() && (frame - 1) % overlayEvery == 0)
 			return writePng(overlayDir + "/" + overlayFileName(frame), renderOverlay(image, dets),
 					error);
@@ -231,6 +237,8 @@ int run(const Options &opt)
 		return fail(kExitRuntime, error);
 	if (!opt.overlayDir.empty() && !makeDirectories(opt.overlayDir, error))
 		return fail(kExitRuntime, error);
+	if (!openMqtt(opt.mqtt, out.mqtt, error))
+		return fail(kExitRuntime, error);
 
 	RunStats stats(anyVideo ? -1 : static_cast<long>(inputs.size()));
 	RgbImage image;
@@ -290,6 +298,7 @@ int run(const Options &opt)
 	if (frame == 0)
 		return fail(kExitRuntime, "no frames in the inputs");
 
+	closeMqtt(out.mqtt, kProgram.name, opt.quiet);
 	if (!out.csv.close(error) || !out.mot.close(error) || !out.jsonl.close(error))
 		return fail(kExitRuntime, error);
 	if (!opt.quiet) {
