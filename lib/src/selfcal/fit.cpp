@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Self-calibration fit (docs/calibration.md, "Self-calibration"): a robust linear model of
 // pixel height against foot position gives the horizon and the checks for degenerate input;
-// then a Levenberg-Marquardt fit of (log f, tilt, roll, log height) to the world heights of
-// all boxes, Cauchy-weighted, and a last Gauss-Newton step on the inliers for the covariance.
+// then a maximum-likelihood fit of (log f, tilt, roll, log height) to the world heights of
+// the boxes (damped Newton, Cauchy loss, then least squares on the inliers, whose Hessian
+// gives the covariance).
 #include "selfcal/fit.h"
 
 #include <algorithm>
@@ -200,21 +201,6 @@ struct Problem {
 		}
 		const double prior = (x(0) - logFocalPrior) / config.focalPriorLogSd;
 		return total + 0.5 * prior * prior;
-	}
-
-	void jacobian(const Vec4 &x, const std::vector<int> &use, Eigen::MatrixXd &J) const
-	{
-		Eigen::VectorXd plus, minus;
-		J.resize(long(use.size()) + 1, 4);
-		for (int p = 0; p < 4; p++) {
-			const double step = 1e-6;
-			Vec4 a = x, b = x;
-			a(p) += step;
-			b(p) -= step;
-			residuals(a, use, plus);
-			residuals(b, use, minus);
-			J.col(p) = (plus - minus) / (2 * step);
-		}
 	}
 };
 
