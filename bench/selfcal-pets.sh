@@ -27,10 +27,12 @@ for n in 50 100 200 300; do
 		python3 - "$log" "$n" <<'PY'
 import re, sys
 t = open(sys.argv[1]).read()
-g = lambda p: re.search(p, t).group(1)
-print(f"| {sys.argv[2]} | Ok | {g(r'focal (\S+ \+- \S+) px')} | {g(r'tilt (\S+ \+- \S+) deg')} | "
-      f"{g(r'height (\S+ \+- \S+) m')} | {g(r'horizon row (\S+) at')} | {g(r'(\d+) observations')} | "
-      f"{g(r'(\d+) inliers')} | {g(r'residual (\S+)')} | {g(r'error: (.*)')} |")
+def g(pattern):
+    return re.search(pattern, t).group(1)
+cells = [sys.argv[2], "Ok", g(r"focal (\S+ \+- \S+) px"), g(r"tilt (\S+ \+- \S+) deg"),
+         g(r"height (\S+ \+- \S+) m"), g(r"horizon row (\S+) at"), g(r"(\d+) observations"),
+         g(r"(\d+) inliers"), g(r"residual (\S+)"), g(r"error: (.*)")]
+print("| " + " | ".join(cells) + " |")
 PY
 	else
 		echo "| $n | $(sed -n 's/.*cannot calibrate (\([A-Za-z]*\).*/\1/p' "$log") | | | | | | | | $(sed 's/|/\\|/g' "$log" | tr -d '\n' | cut -c1-160) |"
