@@ -64,8 +64,9 @@ enum class SelfCalibrationVerdict {
 
 const char *selfCalibrationVerdictName(SelfCalibrationVerdict verdict);
 
-// An estimate with its standard deviation (from the inverse Gauss-Newton Hessian scaled by
-// the residual variance).
+// An estimate with its standard deviation (from the inverse Hessian of the negative
+// log-likelihood on the inliers, scaled by the residual variance when that exceeds 1). It
+// does not include the bias of an assumed mean height that is wrong.
 struct Estimate {
 	double value = 0, sd = 0;
 };

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Self-calibration fit (docs/calibration.md, "Self-calibration"): a robust linear model of
 // pixel height against foot position gives the horizon and the checks for degenerate input;
-// then a Levenberg-Marquardt fit of (log f, tilt, roll, log height) to the world heights of
-// all boxes, Cauchy-weighted, and a last Gauss-Newton step on the inliers for the covariance.
+// then a maximum-likelihood fit of (log f, tilt, roll, log height) to the world heights of
+// the boxes (damped Newton, Cauchy loss, then least squares on the inliers, whose Hessian
+// gives the covariance).
 #include "selfcal/fit.h"
 
 #include <algorithm>
@@ -201,21 +202,6 @@ struct Problem {
 		const double prior = (x(0) - logFocalPrior) / config.focalPriorLogSd;
 		return total + 0.5 * prior * prior;
 	}
-
-	void jacobian(const Vec4 &x, const std::vector<int> &use, Eigen::MatrixXd &J) const
-	{
-		Eigen::VectorXd plus, minus;
-		J.resize(long(use.size()) + 1, 4);
-		for (int p = 0; p < 4; p++) {
-			const double step = 1e-6;
-			Vec4 a = x, b = x;
-			a(p) += step;
-			b(p) -= step;
-			residuals(a, use, plus);
-			residuals(b, use, minus);
-			J.col(p) = (plus - minus) / (2 * step);
-		}
-	}
 };
 
 double robustScale(const Eigen::VectorXd &r, long n)
@@ -381,7 +367,11 @@ SelfCalibrationVerdict fitSelfCalibration(const std::vector<PersonObservation> &
 	for (const PersonObservation &o : obs)
 		if (line.a > 0 && o.footV < -(line.b * o.footU + line.c) / line.a)
 			aboveHorizon++;
-	if ((growth < 0.1 || aboveHorizon > n / 5) && n >= 3 * config.minInliers) {
+	// A steep camera bends pixel height against row (the vertical vanishing point is near):
+	// low growth alone is straight down only where the linear model does not explain most
+	// boxes either.
+	const bool linearFitsPoorly = line.inliers < n / 2;
+	if ((aboveHorizon > n / 5 || growth < 0.1) && n >= 3 * config.minInliers) {
 		// Unless the first and last thirds each look like a proper camera on their own: then
 		// it is the camera that moved between them (a pan mixes their rows).
 		auto thirdGrows = [&](int first, int last) {
@@ -401,7 +391,7 @@ SelfCalibrationVerdict fitSelfCalibration(const std::vector<PersonObservation> &
 					      "fit a camera (horizon rows %.0f and %.0f) but not together (box "
 					      "heights change by %.0f%% over all)", early, late, 100 * growth));
 	}
-	if (growth < 0.1 || aboveHorizon > n / 5)
+	if (aboveHorizon > n / 5 || (growth < 0.1 && linearFitsPoorly))
 		return verdict(out, V::LookingStraightDown,
 			       format("the camera looks (nearly) straight down: box heights change by %.0f%% "
 				      "from the far to the near people (%.0f of %.0f feet above the fitted "
@@ -448,9 +438,13 @@ SelfCalibrationVerdict fitSelfCalibration(const std::vector<PersonObservation> &
 	double bestCost = INFINITY;
 	Eigen::VectorXd r;
 	const double diagonal = std::hypot(width, height);
-	for (int k = 0; k <= 24; k++) {
-		const double f = diagonal * 0.25 * std::pow(20.0, k / 24.0);
-		Vec4 x(std::log(f), std::atan(horizonDistance / f), roll0, 0);
+	for (int k = 0; k <= 24 * 18; k++) {
+		// Focal lengths from a quarter to five diagonals; the tilt from the linear model's
+		// horizon, then every 5 degrees (steep cameras bend that model).
+		const double f = diagonal * 0.25 * std::pow(20.0, (k % 25) / 24.0);
+		const int tiltStep = k / 25;
+		const double tilt = tiltStep == 0 ? std::atan(horizonDistance / f) : (tiltStep - 1) * 5 * M_PI / 180;
+		Vec4 x(std::log(f), tilt, roll0, 0);
 		const Geometry g(x, cu, cv);
 		std::vector<double> h;
 		for (int i : all) {
