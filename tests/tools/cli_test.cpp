@@ -617,6 +617,24 @@ TEST_F(CliRunTest, CalibAloneRunsTheCalibratedMethod)
 	r = detect({ "--model", model_, "--calib", calib, "--resize", "2", "--range", "20", frame });
 	EXPECT_EQ(r.exitCode, 2);
 	EXPECT_NE(r.err.find("--range applies to --resize auto only"), std::string::npos) << r.err;
+	// --calib auto: the generic method while too few people have been seen, and each record
+	// says that no camera estimate is in use yet.
+	r = detect({ "--model", model_, "--calib", "auto", "--jsonl", "-", frame });
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	EXPECT_EQ(r.out.rfind("{\"frame\":1,\"method\":\"generic\",\"camera_estimate\":0,", 0), 0u) << r.out;
+	EXPECT_NE(r.err.find("calib auto: the generic method (resize 2) runs until"), std::string::npos)
+		<< r.err;
+	EXPECT_EQ(r.err.find("no camera"), std::string::npos) << r.err;
+	for (const std::vector<std::string> &bad :
+	     { std::vector<std::string>{ "--method", "calibrated" }, { "--levels", "toolbox" },
+	       { "--resize-at", "frame" } }) {
+		std::vector<std::string> args = { "--model", model_, "--calib", "auto" };
+		args.insert(args.end(), bad.begin(), bad.end());
+		args.push_back(frame);
+		r = detect(args);
+		EXPECT_EQ(r.exitCode, 2) << bad[0];
+		EXPECT_NE(r.err.find("--calib auto"), std::string::npos) << r.err;
+	}
 	// --method generic with the calibration: the generic method, boxes still placed.
 	r = detect({ "--model", model_, "--calib", calib, "--method", "generic", "--resize", "2", "--jsonl", "-",
 		     "--quiet", frame });

@@ -303,7 +303,7 @@ int run(const Options &opt)
 		return fail(kExitRuntime, error);
 	if (!opt.quiet) {
 		stats.printSummary(opt.detector.calibAuto() ? "auto" : opt.detector.methodName());
-		if (!loaded.hasCamera)
+		if (!loaded.hasCamera && !opt.detector.calibAuto())
 			std::fprintf(stderr, "%s: %s\n", kProgram.name, kGenericHint);
 	}
 	return 0;

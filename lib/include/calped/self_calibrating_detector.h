@@ -29,7 +29,14 @@ struct SelfCalibratingConfig {
 		c.resize = 2.0;
 		return c;
 	}();
-	SelfCalibrationConfig selfCalibration;
+	// The estimate is used once camera height's relative sd is under 8% (the offline default
+	// is 5%): the calibrated method's plausible heights (1.4-2.2 m) absorb that error, and
+	// the checks below catch a camera that is wrong.
+	SelfCalibrationConfig selfCalibration = [] {
+		SelfCalibrationConfig c;
+		c.maxRelativeSd = 0.08;
+		return c;
+	}();
 	// Collecting: frames between two estimates (>= 1).
 	int estimateEvery = 25;
 	// Calibrated: every checkEvery-th frame also runs the generic method (>= 1).
@@ -42,7 +49,8 @@ struct SelfCalibratingConfig {
 	// The calibrated method's resize (its minPersonHeight is the calibrated settings'). The
 	// region of interest is where the people were seen: feet from the footRowQuantile-th
 	// quantile of the observations' foot rows down (the estimated focal length is too
-	// uncertain for a range in metres, which is therefore not applied).
+	// uncertain for a range in metres, which is therefore not applied), and the resize is at
+	// most the collecting phase's (people smaller than that one shows were not seen).
 	AutoResizeSettings autoResize;
 	double footRowQuantile = 0.05;
 };

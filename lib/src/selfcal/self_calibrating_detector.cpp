@@ -85,6 +85,7 @@ void SelfCalibratingDetector::tryEstimate()
 					      : CalibratedSettings().minPersonHeight;
 	resize.range = __builtin_inf();
 	resize.minFootRow = observedFootRow();
+	resize.maxResize = std::clamp(d.resize, resize.minResize, resize.maxResize);
 	AutoResize chosen;
 	if (!chooseResize(model_.params, result_.camera, d.maxWidth, d.maxHeight, resize, chosen).ok())
 		return;
