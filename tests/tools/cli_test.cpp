@@ -20,6 +20,7 @@
 #include <stb_image_write.h>
 
 #include "process.h"
+#include "test_model.h"
 
 namespace fs = std::filesystem;
 using calped::test::ProcessResult;
@@ -30,8 +31,6 @@ using calped::test::splitLines;
 // Set by main() from the command line meson passes.
 std::string gDetectPath;
 std::string gConvertPath;
-// Scratch folder for the converted model, removed by main() at the end.
-std::string gModelDir;
 
 namespace {
 
@@ -283,40 +282,6 @@ TEST_F(CliTest, EmptyFolder)
 
 // ---- valid runs: need a real model blob ----
 
-// Converts Dollár's INRIA model once per test binary; empty with a reason when it cannot.
-const std::string &convertedModel(std::string &skipReason)
-{
-	static std::string model;
-	static std::string reason;
-	static bool tried = false;
-	if (!tried) {
-		tried = true;
-		const char *shared = std::getenv("CALPED_SHARED_DIR");
-		std::string mat = std::string(shared ? shared : "../shared") +
-				  "/models/dollar-toolbox/AcfInriaDetector.mat";
-		if (!fs::exists(mat)) {
-			reason = "no " + mat + " (../shared models absent)";
-		} else if (gConvertPath.empty() || !fs::exists(gConvertPath)) {
-			reason = "calped-convert is not built (" + gConvertPath + ")";
-		} else {
-			std::string pattern = (fs::temp_directory_path() / "calped-cli-model-XXXXXX").string();
-			std::vector<char> buf(pattern.begin(), pattern.end());
-			buf.push_back('\0');
-			if (!mkdtemp(buf.data()))
-				throw std::runtime_error("mkdtemp failed");
-			gModelDir = buf.data();
-			std::string out = gModelDir + "/AcfInriaDetector.cpm";
-			ProcessResult r = runProcess(gConvertPath, { mat, out }, gModelDir);
-			if (!r.exited || r.exitCode != 0 || !fs::exists(out))
-				reason = "FAIL: calped-convert " + mat + " failed: " + r.err;
-			else
-				model = out;
-		}
-	}
-	skipReason = reason;
-	return model;
-}
-
 class CliRunTest : public CliTest
 {
 protected:
@@ -340,7 +305,7 @@ protected:
 		if (HasFatalFailure())
 			return;
 		std::string reason;
-		model_ = convertedModel(reason);
+		model_ = calped::test::convertedModel(gConvertPath, reason);
 		if (model_.empty()) {
 			// A converter that exists but fails is a failure, not a reason to skip.
 			ASSERT_NE(reason.rfind("FAIL: ", 0), 0u) << reason;
@@ -681,9 +646,6 @@ int main(int argc, char **argv)
 			gConvertPath = a.substr(10);
 	}
 	int rc = RUN_ALL_TESTS();
-	if (!gModelDir.empty()) {
-		std::error_code ec;
-		fs::remove_all(gModelDir, ec);
-	}
+	calped::test::removeConvertedModel();
 	return rc;
 }
