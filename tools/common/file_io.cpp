@@ -12,15 +12,15 @@
 namespace calped::apps {
 
 bool readFile(const std::string &path, std::vector<uint8_t> &out, std::string &error,
-	      const std::string &what)
+	      const std::string &what, size_t maxBytes)
 {
-	return ports::readFileBytes(path, out, error, what);
+	return ports::readFileBytes(path, out, error, what, maxBytes);
 }
 
-bool readTextFile(const std::string &path, std::string &out, std::string &error)
+bool readTextFile(const std::string &path, std::string &out, std::string &error, size_t maxBytes)
 {
 	std::vector<uint8_t> bytes;
-	if (!readFile(path, bytes, error))
+	if (!readFile(path, bytes, error, "", maxBytes))
 		return false;
 	out.assign(bytes.begin(), bytes.end());
 	return true;
