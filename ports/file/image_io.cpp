@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "atomic_file.h"
 #include "stb_guard.h"
 
 // Debian's libstb ships the compiled implementations; elsewhere stb_impl.cpp provides them.
@@ -271,12 +272,20 @@ bool decodeImageBytes(const uint8_t *bytes, size_t size, const std::string &path
 
 bool writePng(const std::string &path, const RgbImage &image, std::string &error)
 {
-	if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(),
-			    image.width * 3)) {
-		error = "cannot write " + path;
+	// stb's file writer ignores fwrite's result (a full disk gave exit 0 and truncated
+	// images): its callback form writes to a file whose errors commit() reports.
+	AtomicFile out;
+	if (!out.open(path, error))
+		return false;
+	const auto write = [](void *file, void *data, int size) {
+		std::fwrite(data, 1, static_cast<size_t>(size), static_cast<FILE *>(file));
+	};
+	if (!stbi_write_png_to_func(write, out.get(), image.width, image.height, 3, image.pixels.data(),
+				    image.width * 3)) {
+		error = "cannot write " + path + ": PNG encoding failed";
 		return false;
 	}
-	return true;
+	return out.commit(error);
 }
 
 } // namespace ports

@@ -704,6 +704,34 @@ TEST_F(CliRunTest, HugeImageHeaderIsRefusedBeforeSizingTheDetector)
 	EXPECT_NE(r.err.find("over the memory budget of 1.00 GiB"), std::string::npos) << r.err;
 }
 
+// Outputs are written beside their name and renamed on success: a run that fails half-way
+// leaves the earlier file as it was, and calped-convert never replaces what is not a file.
+TEST_F(CliRunTest, AFailedRunLeavesTheEarlierOutputs)
+{
+	// A PNG whose header is sound (it passes the probe) but whose pixel data is damaged.
+	ASSERT_TRUE(stbi_write_png(path("frames/d.png").c_str(), kW, kH, 1, grey_.data(), kW));
+	std::fstream f(path("frames/d.png"), std::ios::in | std::ios::out | std::ios::binary);
+	f.seekp(60);
+	f.write(std::string(64, '\x55').data(), 64);
+	f.close();
+	std::ofstream(path("d.csv")) << "the earlier result\n";
+	const ProcessResult r = detect({ "--model", model_, "--csv", path("d.csv"), "--quiet", path("frames") });
+	expectOneLineError(r, 1);
+	EXPECT_NE(r.err.find("d.png"), std::string::npos) << r.err;
+	EXPECT_EQ(readTextFile(path("d.csv")), "the earlier result\n");
+	for (const auto &entry : fs::directory_iterator(dir_))
+		EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+
+	// calped-convert onto a FIFO (a device node in the issue): refused, the FIFO stays.
+	const char *shared = std::getenv("CALPED_SHARED_DIR");
+	const std::string mat = std::string(shared ? shared : "../shared") + "/models/dollar-toolbox/AcfInriaDetector.mat";
+	ASSERT_EQ(mkfifo(path("out.cpm").c_str(), 0600), 0);
+	const ProcessResult c = runProcess(gConvertPath, { mat, path("out.cpm") }, dir_);
+	EXPECT_EQ(c.exitCode, 1) << c.err;
+	EXPECT_NE(c.err.find("exists and is not a regular file (not replaced)"), std::string::npos) << c.err;
+	EXPECT_TRUE(fs::is_fifo(path("out.cpm")));
+}
+
 TEST_F(CliRunTest, UnwritableOutputIsARuntimeError)
 {
 	ProcessResult r = detect({ "--model", model_, "--csv", path("no/such/dir/d.csv"), path("frames") });

@@ -54,6 +54,19 @@ bool nonEmptyFile(const std::string &path)
 	return fs::exists(path, ec) && fs::file_size(path, ec) > 0;
 }
 
+// An output file is written as PATH.tmp-... and renamed at the end: true once that
+// temporary file has data (the run is under way).
+bool outputGrowing(const std::string &path)
+{
+	const fs::path p(path);
+	std::error_code ec;
+	for (fs::directory_iterator it(p.parent_path(), ec), end; !ec && it != end; it.increment(ec))
+		if (it->path().filename().string().rfind(p.filename().string() + ".tmp-", 0) == 0 &&
+		    it->file_size(ec) > 0)
+			return true;
+	return false;
+}
+
 // Every line is a whole JSON frame record, frames 1, 2, ... in order, the file ends with
 // a line break; returns the number of records.
 size_t expectCompleteJsonl(const std::string &text, const std::string &what)
@@ -159,7 +172,7 @@ TEST_F(StopTest, DetectFinishesItsLinesOnSigterm)
 		gDetectPath,
 		{ "--model", model_, "--csv", path("d.csv"), "--mot", path("d.mot"), "--jsonl", path("d.jsonl"),
 		  "--quiet", dir_ + "/long.avi" },
-		[&] { return nonEmptyFile(path("d.jsonl")); }, SIGTERM);
+		[&] { return outputGrowing(path("d.jsonl")); }, SIGTERM);
 	const size_t frames = expectCompleteJsonl(readTextFile(path("d.jsonl")), "d.jsonl");
 	EXPECT_GT(frames, 0u);
 	EXPECT_LT(frames, static_cast<size_t>(kFrames)) << "the run ended before the signal";
@@ -187,7 +200,7 @@ TEST_F(StopTest, EvalFinishesItsLinesOnSigterm)
 		gEvalPath,
 		{ "--video", dir_ + "/long.avi", "--gt", path("gt.txt"), "--model", model_, "--frames-jsonl",
 		  path("runs"), "--json", path("score.json"), "--quiet" },
-		[&] { return nonEmptyFile(path("runs/generic_r1.0.jsonl")); }, SIGTERM);
+		[&] { return outputGrowing(path("runs/generic_r1.0.jsonl")); }, SIGTERM);
 	const size_t frames = expectCompleteJsonl(readTextFile(path("runs/generic_r1.0.jsonl")), "the run's JSONL");
 	EXPECT_GT(frames, 0u);
 	EXPECT_LT(frames, static_cast<size_t>(kFrames)) << "the run ended before the signal";

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "atomic_file.h"
 #include "image_io.h"
 
 namespace calped::apps {
@@ -28,18 +29,11 @@ bool readTextFile(const std::string &path, std::string &out, std::string &error,
 
 bool writeTextFile(const std::string &path, const std::string &text, std::string &error)
 {
-	FILE *f = std::fopen(path.c_str(), "w");
-	if (!f) {
-		error = "cannot write " + path + ": " + std::strerror(errno);
+	ports::AtomicFile f; // renamed into place only when whole
+	if (!f.open(path, error))
 		return false;
-	}
-	const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
-	const int savedErrno = errno;
-	if (std::fclose(f) != 0 || !ok) {
-		error = "cannot write " + path + ": " + (savedErrno ? std::strerror(savedErrno) : "write error");
-		return false;
-	}
-	return true;
+	std::fwrite(text.data(), 1, text.size(), f.get());
+	return f.commit(error);
 }
 
 bool isRegularFile(const std::string &path)
