@@ -60,10 +60,11 @@ bool foundBy(const Detections &d, const Box &truth)
 	return false;
 }
 
+// Models and calibrations, both under the model cap (the larger of the two; docs/errors.md).
 bool readAll(const std::string &path, std::vector<uint8_t> &out, const char *what)
 {
 	std::string error;
-	if (!ports::readFileBytes(path, out, error, what)) {
+	if (!ports::readFileBytes(path, out, error, what, ports::kMaxModelFileBytes)) {
 		std::fprintf(stderr, "recall_causes: %s\n", error.c_str());
 		return false;
 	}

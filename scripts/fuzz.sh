@@ -76,7 +76,8 @@ for t in "${targets[@]}"; do
 	start=$SECONDS
 	rc=0
 	# -timeout: one input running 10 s is a hang; -rss_limit_mb: 2 GB is an out-of-memory.
-	"$exe" "${limit[@]}" "${dict[@]}" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	# -max_len: inputs up to 1 MB, so that superlinear parsing shows (the default is 4 KB).
+	"$exe" "${limit[@]}" "${dict[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=1048576 -print_final_stats=1 \
 		-artifact_prefix="$work/artifacts/" "$work/corpus" >"$work/log.txt" 2>&1 || rc=$?
 	elapsed=$((SECONDS - start))
 	stat() { sed -n "s/^stat::$1: *//p" "$work/log.txt" | tail -1; }

@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "live_loop.h"
 
-#include "frame_detector.h"
-
-#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -15,37 +12,21 @@
 #include <calped/calped.h>
 
 #include "cli_error.h"
+#include "frame_detector.h"
 #include "detector_options.h"
 #include "json_frame.h"
 #include "mqtt_options.h"
 #include "overlay_writer.h"
+#include "stop_signal.h"
 
 namespace calped {
 namespace live {
 
 using apps::cliFail;
 using apps::kExitRuntime;
+using apps::stopRequested;
 
 namespace {
-
-std::atomic<bool> gStop{ false };
-
-void onStopSignal(int)
-{
-	gStop.store(true);
-}
-
-void installStopHandlers()
-{
-	struct sigaction sa;
-	std::memset(&sa, 0, sizeof(sa));
-	sa.sa_handler = onStopSignal;
-	sigemptyset(&sa.sa_mask);
-	sigaction(SIGINT, &sa, nullptr);
-	sigaction(SIGTERM, &sa, nullptr);
-	// A closed stdout pipe becomes a write error, not a silent death.
-	std::signal(SIGPIPE, SIG_IGN);
-}
 
 // Model, calibration and detector, set up before (or, when the source cannot tell its
 // frame size, at) the first frame.
@@ -108,14 +89,11 @@ private:
 
 } // namespace
 
-bool stopRequested()
-{
-	return gStop.load();
-}
-
 int runLive(ports::FrameSource &source, const LiveOptions &options, const char *program,
 	    const StatsReporter *extra)
 {
+	// Before the first slow step, so a stop during setup is not a kill.
+	apps::installStopHandlers();
 	std::string error;
 	DetectorSetup setup;
 	if (!apps::loadDetectorInputs(options.detector, setup.inputs, error))
@@ -131,7 +109,6 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 	if (!apps::openMqtt(options.mqtt, publisher, error))
 		return cliFail(program, kExitRuntime, error);
 
-	installStopHandlers();
 	Status st = source.start();
 	if (!st.ok())
 		return cliFail(program, kExitRuntime, std::string(source.name()) + ": " + st.message());
@@ -145,20 +122,38 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 	apps::JsonFrame record;
 	record.method = options.detector.methodName();
 	int exitCode = 0;
+	using Clock = std::chrono::steady_clock;
+	Clock::time_point lastFrame = Clock::now(); // or the start: --frame-timeout counts from it
 	while (!stopRequested()) {
 		if (!options.quiet && statsLine.due(options.statsEvery))
 			statsLine.print(source.stats(), processed, extra);
 
 		ports::Frame frame;
 		st = source.next(frame, static_cast<int>(options.timeoutMs));
-		if (st.code() == ErrorCode::Timeout)
-			continue; // counted by the source; a stop signal is seen on the next turn
+		if (st.code() == ErrorCode::Timeout) {
+			// Counted by the source; a stop signal is seen on the next turn. A camera that
+			// only ever sends damaged frames (packet loss without resend) must not run for ever.
+			const double waited = std::chrono::duration<double>(Clock::now() - lastFrame).count();
+			if (options.frameTimeoutS > 0 && waited >= options.frameTimeoutS) {
+				const ports::SourceStats s = source.stats();
+				char line[200];
+				std::snprintf(line, sizeof(line),
+					      "no complete frame for %.1f s (%llu incomplete, %llu timeouts so far; "
+					      "--frame-timeout %g)",
+					      waited, static_cast<unsigned long long>(s.incomplete),
+					      static_cast<unsigned long long>(s.timeouts), options.frameTimeoutS);
+				exitCode = cliFail(program, kExitRuntime, std::string(source.name()) + ": " + line);
+				break;
+			}
+			continue;
+		}
 		if (st.code() == ErrorCode::EndOfStream)
 			break;
 		if (!st.ok()) {
 			exitCode = cliFail(program, kExitRuntime, std::string(source.name()) + ": " + st.message());
 			break;
 		}
+		lastFrame = Clock::now();
 		if (!setup.detector.valid() && !setup.create(options, frame.image.width, frame.image.height, error)) {
 			exitCode = cliFail(program, kExitRuntime, error);
 			break;
@@ -208,6 +203,8 @@ int runLive(ports::FrameSource &source, const LiveOptions &options, const char *
 		exitCode = cliFail(program, kExitRuntime, "cannot write standard output");
 	if (!options.quiet)
 		statsLine.print(source.stats(), processed, extra);
+	if (exitCode == 0 && stopRequested())
+		exitCode = apps::stopExitCode();
 	return exitCode;
 }
 

@@ -19,14 +19,13 @@ public:
 	virtual void appendStats(char *line, size_t size) const = 0;
 };
 
-// Returns the exit status: 0 after --frames N, the end of the source or a stop signal;
-// 1 on a runtime error (model, calibration, camera lost), reported on stderr as
-// "PROGRAM: message". The source is started here and stopped before returning.
+// Returns the exit status: 0 after --frames N or the end of the source; 128 + the signal
+// after SIGINT/SIGTERM (tools/common/stop_signal.h: the frame being processed is finished
+// and its line written); 1 on a runtime error (model, calibration, camera lost, no complete
+// frame within --frame-timeout), reported on stderr as "PROGRAM: message". The source is
+// started here and stopped before returning.
 int runLive(ports::FrameSource &source, const LiveOptions &options, const char *program,
 	    const StatsReporter *extra = nullptr);
-
-// True once SIGINT or SIGTERM arrived (handlers installed by runLive).
-bool stopRequested();
 
 } // namespace live
 } // namespace calped

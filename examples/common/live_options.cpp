@@ -14,6 +14,8 @@ std::vector<apps::OptionSpec> liveOptionTable()
 		{ "overlay-every", "K", "overlay every K-th processed frame (default 1)" },
 		{ "frames", "N", "stop after N processed frames, exit status 0" },
 		{ "timeout", "MS", "wait per frame before counting a timeout (default 2000)" },
+		{ "frame-timeout", "S", "fail after S seconds without a complete frame (default 30,\n"
+					"0 waits for ever)" },
 		{ "stats-every", "S", "seconds between stats lines on stderr (default 5)" },
 		{ "quiet", nullptr, "no stats lines" },
 	}), apps::mqttOptionTable());
@@ -32,6 +34,8 @@ bool takeLiveOption(const apps::ParsedOption &o, LiveOptions &out, std::string &
 		apps::wholeIn(o, 1, 1000000000000L, out.frames, error);
 	else if (n == "timeout")
 		apps::wholeIn(o, 1, 600000L, out.timeoutMs, error);
+	else if (n == "frame-timeout")
+		apps::numberIn(o, 0, true, 86400, out.frameTimeoutS, error);
 	else if (n == "stats-every")
 		apps::numberIn(o, 0, true, 86400, out.statsEvery, error);
 	else if (n == "quiet")
@@ -60,8 +64,10 @@ const char *liveEpilogue()
 {
 	return "\n"
 	       "Standard output: one JSON object per processed frame (docs/ports.md).\n"
-	       "SIGINT and SIGTERM stop cleanly (exit status 0).\n"
-	       "exit status: 0 success, 1 runtime error (camera lost, bad model, ...), 2 usage error\n";
+	       "SIGINT and SIGTERM stop after the current frame: complete JSON lines, exit status\n"
+	       "128 + the signal (130, 143).\n"
+	       "exit status: 0 success, 1 runtime error (camera lost, no complete frame within\n"
+	       "--frame-timeout, bad model, ...), 2 usage error, 130/143 stopped by SIGINT/SIGTERM\n";
 }
 
 } // namespace live

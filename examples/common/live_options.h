@@ -22,6 +22,7 @@ struct LiveOptions {
 	long frames = 0;           // --frames N: stop after N processed frames (0: until stopped)
 	double statsEvery = 5.0;   // --stats-every S: seconds between stats lines on stderr
 	long timeoutMs = 2000;     // --timeout MS: wait per frame before counting a timeout
+	double frameTimeoutS = 30; // --frame-timeout S: give up after S s without a complete frame (0: never)
 	bool quiet = false;        // --quiet: no stats lines
 	apps::MqttOptions mqtt;    // --mqtt URL, --mqtt-queue N, --camera-id ID
 };

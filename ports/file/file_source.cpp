@@ -76,12 +76,14 @@ Status FileSource::rewind()
 	return Status::success();
 }
 
-Status FileSource::readFrame(int &width, int &height)
+Status FileSource::readFrame(int &width, int &height, int timeoutMs)
 {
 	// At most one rewind per call: an empty video must end, not spin.
 	for (int attempt = 0; attempt < 2; attempt++) {
 		if (video_) {
-			const Status st = pipe_.read(pixels_.data());
+			const Status st = pipe_.read(pixels_.data(), timeoutMs);
+			if (st.code() == ErrorCode::Timeout)
+				stats_.timeouts++;
 			if (st.ok()) {
 				pipeHasFrames_ = true;
 				width = maxWidth_;
@@ -130,7 +132,7 @@ Status FileSource::next(Frame &frame, int timeoutMs)
 	}
 
 	int width = 0, height = 0;
-	const Status st = readFrame(width, height);
+	const Status st = readFrame(width, height, timeoutMs);
 	if (!st.ok())
 		return st;
 	frameId_++;

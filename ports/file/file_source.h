@@ -45,7 +45,7 @@ public:
 
 private:
 	FileSource() = default;
-	Status readFrame(int &width, int &height); // the next frame into pixels_, rewinding when looping
+	Status readFrame(int &width, int &height, int timeoutMs); // the next frame into pixels_, rewinding when looping
 	Status rewind();
 
 	FileSourceOptions options_;

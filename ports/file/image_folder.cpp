@@ -35,8 +35,20 @@ Status listImageFiles(const std::string &path, std::vector<std::string> &files)
 	}
 	for (fs::directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec)) {
 		const std::string name = it->path().string();
-		if (isImageFileName(name) && it->is_regular_file(ec))
-			files.push_back(name);
+		if (!isImageFileName(name))
+			continue;
+		// Named as a frame but not one: skipping it would renumber every later frame.
+		std::error_code kindError;
+		const fs::file_status kind = fs::status(it->path(), kindError);
+		if (!fs::is_regular_file(kind))
+			return Status::error(ErrorCode::IoError,
+					     "%s is named like a frame but is %s, not a regular file",
+					     name.c_str(),
+					     fs::is_directory(kind) ? "a folder"
+					     : fs::is_fifo(kind)    ? "a FIFO"
+					     : !fs::exists(kind)    ? "a dangling symbolic link"
+								    : "a device or socket");
+		files.push_back(name);
 	}
 	if (ec)
 		return Status::error(ErrorCode::IoError, "cannot list %s: %s", path.c_str(),

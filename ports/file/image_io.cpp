@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "image_io.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include "atomic_file.h"
 #include "stb_guard.h"
 
 // Debian's libstb ships the compiled implementations; elsewhere stb_impl.cpp provides them.
@@ -89,34 +93,70 @@ bool checkSize(int width, int height, long maxPixels, const std::string &path, s
 } // namespace
 
 bool readFileBytes(const std::string &path, std::vector<uint8_t> &out, std::string &error,
-		   const std::string &what)
+		   const std::string &what, size_t maxBytes)
 {
 	out.clear();
-	// stat(), not std::filesystem: a path object would allocate on every frame.
+	// stat(), not std::filesystem: a path object would allocate on every frame. Only a
+	// regular file: a FIFO would block for ever, a device (/dev/zero) never ends.
 	struct stat st;
-	if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-		error = "cannot read " + what + path + ": is a directory";
-		return false;
-	}
-	std::unique_ptr<FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
-	if (!f) {
+	if (::stat(path.c_str(), &st) != 0) {
 		error = "cannot read " + what + path + ": " + std::strerror(errno);
 		return false;
 	}
-	// In chunks rather than trusting a size from seeking (works for pipes too); the
-	// vector keeps its capacity from the last file.
-	uint8_t chunk[1 << 16];
+	if (!S_ISREG(st.st_mode)) {
+		error = "cannot read " + what + path + ": " +
+			(S_ISDIR(st.st_mode) ? "is a directory" : S_ISFIFO(st.st_mode) ? "is a FIFO, not a regular file"
+				: "is a device or socket, not a regular file");
+		return false;
+	}
+	if (static_cast<unsigned long long>(st.st_size) > maxBytes) {
+		error = "cannot read " + what + path + ": " + std::to_string(st.st_size) + " bytes, over the " +
+			std::to_string(maxBytes) + "-byte limit for this kind of file (docs/errors.md)";
+		return false;
+	}
+	// O_NONBLOCK: if the path was swapped for a FIFO since stat(), open() must not wait.
+	const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+	if (fd < 0) {
+		error = "cannot read " + what + path + ": " + std::strerror(errno);
+		return false;
+	}
+	struct stat opened;
+	if (::fstat(fd, &opened) != 0 || !S_ISREG(opened.st_mode)) {
+		::close(fd);
+		error = "cannot read " + what + path + ": not a regular file";
+		return false;
+	}
+	// Up to the cap and one byte more: a file that grew past it is refused, not cut.
+	out.resize(std::min<size_t>(static_cast<size_t>(opened.st_size), maxBytes) + 1);
+	size_t got = 0;
 	for (;;) {
-		const size_t n = std::fread(chunk, 1, sizeof(chunk), f.get());
-		out.insert(out.end(), chunk, chunk + n);
-		if (n < sizeof(chunk))
+		if (got == out.size()) {
+			if (got > maxBytes)
+				break;
+			out.resize(std::min(out.size() * 2, maxBytes + 1));
+		}
+		const ssize_t n = ::read(fd, out.data() + got, out.size() - got);
+		if (n < 0 && errno == EINTR)
+			continue;
+		if (n < 0) {
+			const int e = errno;
+			::close(fd);
+			out.clear();
+			error = "cannot read " + what + path + ": " + std::strerror(e);
+			return false;
+		}
+		if (n == 0)
 			break;
+		got += static_cast<size_t>(n);
 	}
-	if (std::ferror(f.get())) {
-		error = "cannot read " + what + path + ": " + std::strerror(errno);
+	::close(fd);
+	if (got > maxBytes) {
 		out.clear();
+		error = "cannot read " + what + path + ": over the " + std::to_string(maxBytes) +
+			"-byte limit for this kind of file (docs/errors.md)";
 		return false;
 	}
+	out.resize(got);
 	return true;
 }
 
@@ -183,7 +223,7 @@ bool decodeBytes(const uint8_t *bytes, size_t size, const std::string &path, lon
 
 bool ImageDecoder::probe(const std::string &path, int &width, int &height, std::string &error)
 {
-	if (!readFileBytes(path, bytes_, error))
+	if (!readFileBytes(path, bytes_, error, "", kMaxImageFileBytes))
 		return false;
 	if (!checkBytes(bytes_.data(), bytes_.size(), path, error))
 		return false;
@@ -198,7 +238,7 @@ bool ImageDecoder::probe(const std::string &path, int &width, int &height, std::
 
 bool ImageDecoder::decode(const std::string &path, RgbImage &out, std::string &error)
 {
-	if (!readFileBytes(path, bytes_, error))
+	if (!readFileBytes(path, bytes_, error, "", kMaxImageFileBytes))
 		return false;
 	return decodeBytes(bytes_.data(), bytes_.size(), path, kMaxImagePixels, &out.pixels, nullptr,
 			   0, out.width, out.height, error);
@@ -207,7 +247,7 @@ bool ImageDecoder::decode(const std::string &path, RgbImage &out, std::string &e
 bool ImageDecoder::decodeInto(const std::string &path, uint8_t *pixels, size_t capacity,
 			      int &width, int &height, std::string &error)
 {
-	if (!readFileBytes(path, bytes_, error))
+	if (!readFileBytes(path, bytes_, error, "", kMaxImageFileBytes))
 		return false;
 	return decodeBytes(bytes_.data(), bytes_.size(), path, kMaxImagePixels, nullptr, pixels,
 			   capacity, width, height, error);
@@ -232,12 +272,20 @@ bool decodeImageBytes(const uint8_t *bytes, size_t size, const std::string &path
 
 bool writePng(const std::string &path, const RgbImage &image, std::string &error)
 {
-	if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(),
-			    image.width * 3)) {
-		error = "cannot write " + path;
+	// stb's file writer ignores fwrite's result (a full disk gave exit 0 and truncated
+	// images): its callback form writes to a file whose errors commit() reports.
+	AtomicFile out;
+	if (!out.open(path, error))
+		return false;
+	const auto write = [](void *file, void *data, int size) {
+		std::fwrite(data, 1, static_cast<size_t>(size), static_cast<FILE *>(file));
+	};
+	if (!stbi_write_png_to_func(write, out.get(), image.width, image.height, 3, image.pixels.data(),
+				    image.width * 3)) {
+		error = "cannot write " + path + ": PNG encoding failed";
 		return false;
 	}
-	return true;
+	return out.commit(error);
 }
 
 } // namespace ports

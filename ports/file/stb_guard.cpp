@@ -221,6 +221,13 @@ bool pnmSafe(const uint8_t *data, size_t size, std::string &reason)
 			 ") is not supported, only 8-bit";
 		return false;
 	}
+	// stb neither rescales other maximum values nor refuses 0: 127 would be read as a
+	// darker image, silently.
+	if (values[2] != 255) {
+		reason = "PGM/PPM maximum value " + std::to_string(values[2]) +
+			 " is not supported, only 255 (8-bit samples at full scale)";
+		return false;
+	}
 	// stb leaves the samples of a short file uninitialised instead of failing.
 	const unsigned long long samples = static_cast<unsigned long long>(values[0]) *
 					   static_cast<unsigned long long>(values[1]) *

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "video_pipe.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -160,25 +162,49 @@ Status VideoPipe::open(const std::string &path, int width, int height)
 	pid_ = child.pid;
 	dataFd_ = child.out;
 	errorFd_ = child.err;
+	got_ = 0;
+	errorLength_ = 0;
+	errorTail_[0] = '\0';
 	return Status::success();
 }
 
-Status VideoPipe::read(uint8_t *pixels)
+Status VideoPipe::read(uint8_t *pixels, int timeoutMs)
 {
 	if (dataFd_ < 0)
 		return Status::error(ErrorCode::EndOfStream, "%s: no more frames", path_.c_str());
-	size_t got = 0;
-	while (got < frameBytes_) {
-		const ssize_t r = ::read(dataFd_, pixels + got, frameBytes_ - got);
-		if (r < 0 && errno == EINTR)
+	while (got_ < frameBytes_) {
+		struct pollfd fds[2] = { { dataFd_, POLLIN, 0 }, { errorFd_, POLLIN, 0 } };
+		const int ready = poll(fds, errorFd_ >= 0 ? 2 : 1, timeoutMs);
+		if (ready < 0 && errno != EINTR)
+			return Status::error(ErrorCode::IoError, "waiting for frames of %s from ffmpeg: %s",
+					     path_.c_str(), std::strerror(errno));
+		if (ready <= 0)
+			return Status::error(ErrorCode::Timeout, "%s: no frame data within %d ms",
+					     path_.c_str(), timeoutMs);
+		if (errorFd_ >= 0 && (fds[1].revents & (POLLIN | POLLHUP | POLLERR)) && !drainErrors()) {
+			::close(errorFd_);
+			errorFd_ = -1;
+		}
+		// At -loglevel error ffmpeg says nothing about a sound file; a line means damaged
+		// data, and the frames it drops would silently renumber the rest.
+		if (std::memchr(errorTail_, '\n', errorLength_)) {
+			got_ = 0;
+			return failed("ffmpeg reported an error decoding");
+		}
+		if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR)))
 			continue;
+		const ssize_t r = ::read(dataFd_, pixels + got_, frameBytes_ - got_);
+		if (r < 0 && errno == EINTR)
+			return Status::error(ErrorCode::Timeout, "%s: interrupted", path_.c_str());
 		if (r < 0)
 			return Status::error(ErrorCode::IoError, "reading frames of %s from ffmpeg: %s",
 					     path_.c_str(), std::strerror(errno));
 		if (r == 0)
 			break;
-		got += static_cast<size_t>(r);
+		got_ += static_cast<size_t>(r);
 	}
+	const size_t got = got_;
+	got_ = 0;
 	if (got == frameBytes_)
 		return Status::success();
 	const Status end = finish();
@@ -190,19 +216,69 @@ Status VideoPipe::read(uint8_t *pixels)
 	return Status::error(ErrorCode::EndOfStream, "%s: no more frames", path_.c_str());
 }
 
+bool VideoPipe::drainErrors()
+{
+	char chunk[4096];
+	const ssize_t r = ::read(errorFd_, chunk, sizeof(chunk));
+	if (r < 0)
+		return errno == EINTR || errno == EAGAIN;
+	if (r == 0)
+		return false;
+	// Keep the last sizeof(errorTail_) - 1 bytes: the latest message is the one that explains.
+	const size_t cap = sizeof(errorTail_) - 1;
+	size_t n = static_cast<size_t>(r);
+	const char *from = chunk;
+	if (n >= cap) {
+		from += n - cap;
+		n = cap;
+		errorLength_ = 0;
+	} else if (errorLength_ + n > cap) {
+		const size_t drop = errorLength_ + n - cap;
+		std::memmove(errorTail_, errorTail_ + drop, errorLength_ - drop);
+		errorLength_ -= drop;
+	}
+	std::memcpy(errorTail_ + errorLength_, from, n);
+	errorLength_ += n;
+	errorTail_[errorLength_] = '\0';
+	return true;
+}
+
 Status VideoPipe::finish()
 {
-	char err[200];
-	readMessage(errorFd_, err, sizeof(err));
+	while (errorFd_ >= 0 && drainErrors()) {
+	}
 	::close(dataFd_);
-	::close(errorFd_);
+	if (errorFd_ >= 0)
+		::close(errorFd_);
 	dataFd_ = errorFd_ = -1;
 	const int status = reap(pid_);
 	pid_ = -1;
-	if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
+	if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && errorLength_ == 0)
 		return Status::success();
 	return Status::error(ErrorCode::IoError, "ffmpeg failed on %s: %s", path_.c_str(),
-			     err[0] ? err : "no message");
+			     firstErrorLine().c_str());
+}
+
+Status VideoPipe::failed(const char *what)
+{
+	const std::string line = firstErrorLine();
+	close();
+	return Status::error(ErrorCode::IoError, "%s %s: %s", what, path_.c_str(), line.c_str());
+}
+
+std::string VideoPipe::firstErrorLine() const
+{
+	// One line of 160 bytes at most, control bytes as spaces: a log line, not a dump.
+	size_t n = 0;
+	while (n < errorLength_ && n < 160 && errorTail_[n] != '\n')
+		n++;
+	std::string line(errorTail_, n);
+	for (char &c : line)
+		if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+			c = ' ';
+	while (!line.empty() && line.back() == ' ')
+		line.pop_back();
+	return line.empty() ? "no message" : line;
 }
 
 void VideoPipe::close()

@@ -198,5 +198,40 @@ TEST(DetectorConfig, EveryMeaninglessOrOutOfRangeSettingIsRefusedByName)
 	EXPECT_TRUE(c.validate().ok()) << c.validate().message();
 }
 
+// The frame-sized buffers are estimated before any is allocated: a model asking for four
+// octaves up (13.4 GB on a PETS frame before this check) and a huge frame at resize 2
+// are refused with the need and the budget; the budget can be raised or lifted.
+TEST(DetectorConfig, MemoryBeyondTheBudgetIsRefusedBeforeAllocating)
+{
+	Model model = test::randomModel(1);
+	DetectorConfig c;
+	c.maxWidth = 768;
+	c.maxHeight = 576;
+	std::unique_ptr<Detector> det;
+	ASSERT_TRUE(Detector::create(model, c, det).ok());
+	model.params.nOctUp = 4;
+	Status st = Detector::create(model, c, det);
+	EXPECT_EQ(st.code(), ErrorCode::OutOfMemory) << st.message();
+	EXPECT_NE(std::string(st.message()).find("nOctUp 4 need about 4.2"), std::string::npos) << st.message();
+	EXPECT_NE(std::string(st.message()).find("budget of 1.00 GiB"), std::string::npos) << st.message();
+	EXPECT_EQ(det, nullptr);
+
+	model = test::randomModel(1);
+	c.maxWidth = c.maxHeight = 8192;
+	c.resize = 2;
+	st = Detector::create(model, c, det);
+	EXPECT_EQ(st.code(), ErrorCode::OutOfMemory) << st.message();
+	EXPECT_NE(std::string(st.message()).find("8192x8192 frames at resize 2"), std::string::npos) << st.message();
+
+	// 1920x1080 at resize 2: about 0.35 GiB, refused under a 256 MiB budget, taken with none.
+	c.maxWidth = 1920;
+	c.maxHeight = 1080;
+	c.memoryBudgetBytes = 256u << 20;
+	st = Detector::create(model, c, det);
+	EXPECT_EQ(st.code(), ErrorCode::OutOfMemory) << st.message();
+	c.memoryBudgetBytes = 0;
+	EXPECT_TRUE(Detector::create(model, c, det).ok());
+}
+
 } // namespace
 } // namespace calped

@@ -186,6 +186,8 @@ TEST(ModelValidation, EachParameterOutOfRangeIsRejectedAndNamed)
 		{ "modelDsH = 129", [](ModelParams &p) { p.modelDsH = 129; }, bad },
 		{ "modelDsW = nan", [nan](ModelParams &p) { p.modelDsW = nan; }, bad },
 		{ "modelDsW = 0", [](ModelParams &p) { p.modelDsW = 0; }, bad },
+		{ "modelDsH = 1e-30", [](ModelParams &p) { p.modelDsH = 1e-30f; }, bad },
+		{ "modelDsW = 3.9", [](ModelParams &p) { p.modelDsW = 3.9f; }, bad },
 		{ "cascThr = inf", [inf](ModelParams &p) { p.cascThr = inf; }, bad },
 		{ "cascThr = 40000", [](ModelParams &p) { p.cascThr = 40000; }, bad },
 		{ "colorSmooth = -1", [](ModelParams &p) { p.colorSmooth = -1; }, bad },

@@ -98,7 +98,7 @@ TEST(Args, NumbersAreWholeAndFinite)
 	long l = 0;
 	EXPECT_TRUE(parseNumber("2.5", d));
 	EXPECT_EQ(d, 2.5);
-	for (const char *bad : { "", "2x", "nan", "inf", "1e400", " 2" })
+	for (const char *bad : { "", "2x", "nan", "inf", "1e400", " 2", "0x2", "0X1p1", "2 " })
 		EXPECT_FALSE(parseNumber(bad, d)) << bad;
 	EXPECT_TRUE(parseWhole("-3", l));
 	EXPECT_EQ(l, -3);

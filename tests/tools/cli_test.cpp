@@ -14,12 +14,14 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <stb_image.h>
 #include <stb_image_write.h>
 
 #include "process.h"
+#include "test_model.h"
 
 namespace fs = std::filesystem;
 using calped::test::ProcessResult;
@@ -30,8 +32,6 @@ using calped::test::splitLines;
 // Set by main() from the command line meson passes.
 std::string gDetectPath;
 std::string gConvertPath;
-// Scratch folder for the converted model, removed by main() at the end.
-std::string gModelDir;
 
 namespace {
 
@@ -265,6 +265,27 @@ TEST_F(CliTest, UndecodableImageInsideAFolder)
 	EXPECT_NE(r.err.find("000002.png"), std::string::npos) << r.err;
 }
 
+// A PPM whose maximum value is not 255 would be read unscaled (127 as a darker image):
+// refused by name, before the model is read.
+TEST_F(CliTest, PpmMaximumOtherThan255IsRefused)
+{
+	for (const char *maxval : { "127", "0", "1" }) {
+		std::ofstream(path("m.ppm"), std::ios::binary) << "P6\n2 2\n" << maxval << "\n" << std::string(12, '\x10');
+		const ProcessResult r = detect({ "--model", path("none.cpm"), path("m.ppm") });
+		expectOneLineError(r, 1);
+		EXPECT_NE(r.err.find(std::string("maximum value ") + maxval + " is not supported, only 255"),
+			  std::string::npos) << r.err;
+	}
+}
+
+// strtod reads "0x2" as 2: numbers are decimal, the whole value.
+TEST_F(CliTest, HexadecimalNumbersAreUsageErrors)
+{
+	const ProcessResult r = detect({ "--model", "m.cpm", "--resize", "0x2", someImage() });
+	expectOneLineError(r, 2);
+	EXPECT_NE(r.err.find("--resize: expected a number > 0 and <= 8, got '0x2'"), std::string::npos) << r.err;
+}
+
 TEST_F(CliTest, MissingInputPath)
 {
 	ProcessResult r = detect({ "--model", path("nowhere.cpm"), path("no-such-frames") });
@@ -282,40 +303,6 @@ TEST_F(CliTest, EmptyFolder)
 }
 
 // ---- valid runs: need a real model blob ----
-
-// Converts Dollár's INRIA model once per test binary; empty with a reason when it cannot.
-const std::string &convertedModel(std::string &skipReason)
-{
-	static std::string model;
-	static std::string reason;
-	static bool tried = false;
-	if (!tried) {
-		tried = true;
-		const char *shared = std::getenv("CALPED_SHARED_DIR");
-		std::string mat = std::string(shared ? shared : "../shared") +
-				  "/models/dollar-toolbox/AcfInriaDetector.mat";
-		if (!fs::exists(mat)) {
-			reason = "no " + mat + " (../shared models absent)";
-		} else if (gConvertPath.empty() || !fs::exists(gConvertPath)) {
-			reason = "calped-convert is not built (" + gConvertPath + ")";
-		} else {
-			std::string pattern = (fs::temp_directory_path() / "calped-cli-model-XXXXXX").string();
-			std::vector<char> buf(pattern.begin(), pattern.end());
-			buf.push_back('\0');
-			if (!mkdtemp(buf.data()))
-				throw std::runtime_error("mkdtemp failed");
-			gModelDir = buf.data();
-			std::string out = gModelDir + "/AcfInriaDetector.cpm";
-			ProcessResult r = runProcess(gConvertPath, { mat, out }, gModelDir);
-			if (!r.exited || r.exitCode != 0 || !fs::exists(out))
-				reason = "FAIL: calped-convert " + mat + " failed: " + r.err;
-			else
-				model = out;
-		}
-	}
-	skipReason = reason;
-	return model;
-}
 
 class CliRunTest : public CliTest
 {
@@ -340,7 +327,7 @@ protected:
 		if (HasFatalFailure())
 			return;
 		std::string reason;
-		model_ = convertedModel(reason);
+		model_ = calped::test::convertedModel(gConvertPath, reason);
 		if (model_.empty()) {
 			// A converter that exists but fails is a failure, not a reason to skip.
 			ASSERT_NE(reason.rfind("FAIL: ", 0), 0u) << reason;
@@ -349,7 +336,7 @@ protected:
 
 		// Three frames in name order: grey PNG, colour PPM, colour JPEG; plus things to ignore.
 		fs::create_directory(path("frames"));
-		fs::create_directory(path("frames/sub.png"));
+		fs::create_directory(path("frames/sub"));
 		std::ofstream(path("frames/notes.txt")) << "ignored\n";
 		grey_ = greyPattern(kW, kH);
 		ASSERT_TRUE(stbi_write_png(path("frames/a.png").c_str(), kW, kH, 1, grey_.data(), kW));
@@ -679,6 +666,90 @@ TEST_F(CliRunTest, OverlaysEveryKthFrameAsRgb)
 	EXPECT_EQ(mismatches, 0u);
 }
 
+// Hostile inputs (issue 19): files that are not regular files are refused by name, not
+// waited on (a FIFO) or read for ever (/dev/zero); entries named like frames that are not
+// regular files are an error, not silently skipped (later frames would be renumbered); a
+// tiny PNG whose header claims 8192x8192 is refused before any detector is sized for it.
+TEST_F(CliRunTest, NonRegularFilesAreRefusedByName)
+{
+	ASSERT_EQ(mkfifo(path("fifo.cpm").c_str(), 0600), 0);
+	const auto within = [&](const std::vector<std::string> &args) {
+		calped::test::RunningProcess p = calped::test::startProcess(gDetectPath, args, dir_);
+		const ProcessResult r = calped::test::waitProcess(p, 60);
+		EXPECT_FALSE(r.hung) << "hung";
+		return r;
+	};
+	ProcessResult r = within({ "--model", path("fifo.cpm"), path("frames") });
+	expectOneLineError(r, 1);
+	EXPECT_NE(r.err.find("model " + path("fifo.cpm") + ": is a FIFO"), std::string::npos) << r.err;
+	r = within({ "--model", "/dev/zero", path("frames") });
+	expectOneLineError(r, 1);
+	EXPECT_NE(r.err.find("/dev/zero: is a device"), std::string::npos) << r.err;
+	r = within({ "--model", model_, "--calib", path("fifo.cpm"), path("frames") });
+	expectOneLineError(r, 1);
+	EXPECT_NE(r.err.find("is a FIFO"), std::string::npos) << r.err;
+
+	for (const char *kind : { "fifo", "folder", "dangling" }) {
+		const std::string entry = path("frames/b2.png");
+		if (std::string(kind) == "fifo")
+			ASSERT_EQ(mkfifo(entry.c_str(), 0600), 0);
+		else if (std::string(kind) == "folder")
+			fs::create_directory(entry);
+		else
+			fs::create_symlink(path("nowhere.png"), entry);
+		r = within({ "--model", model_, "--quiet", path("frames") });
+		expectOneLineError(r, 1);
+		EXPECT_NE(r.err.find("b2.png is named like a frame but is a"), std::string::npos) << kind << ": " << r.err;
+		std::error_code ec;
+		fs::remove_all(entry, ec);
+	}
+}
+
+TEST_F(CliRunTest, HugeImageHeaderIsRefusedBeforeSizingTheDetector)
+{
+	// A 1x1 PNG whose header (IHDR, bytes 16-23) then says 8192x8192: stb reads the size
+	// from the header alone.
+	const uint8_t pixel[3] = { 1, 2, 3 };
+	ASSERT_TRUE(stbi_write_png(path("huge.png").c_str(), 1, 1, 3, pixel, 3));
+	std::fstream f(path("huge.png"), std::ios::in | std::ios::out | std::ios::binary);
+	const char size[8] = { 0, 0, 0x20, 0, 0, 0, 0x20, 0 };
+	f.seekp(16);
+	f.write(size, 8);
+	f.close();
+	ProcessResult r = detect({ "--model", model_, "--resize", "2", path("huge.png") });
+	expectOneLineError(r, 1);
+	EXPECT_NE(r.err.find("8192x8192 frames at resize 2"), std::string::npos) << r.err;
+	EXPECT_NE(r.err.find("over the memory budget of 1.00 GiB"), std::string::npos) << r.err;
+}
+
+// Outputs are written beside their name and renamed on success: a run that fails half-way
+// leaves the earlier file as it was, and calped-convert never replaces what is not a file.
+TEST_F(CliRunTest, AFailedRunLeavesTheEarlierOutputs)
+{
+	// A PNG whose header is sound (it passes the probe) but whose pixel data is damaged.
+	ASSERT_TRUE(stbi_write_png(path("frames/d.png").c_str(), kW, kH, 1, grey_.data(), kW));
+	std::fstream f(path("frames/d.png"), std::ios::in | std::ios::out | std::ios::binary);
+	f.seekp(60);
+	f.write(std::string(64, '\x55').data(), 64);
+	f.close();
+	std::ofstream(path("d.csv")) << "the earlier result\n";
+	const ProcessResult r = detect({ "--model", model_, "--csv", path("d.csv"), "--quiet", path("frames") });
+	expectOneLineError(r, 1);
+	EXPECT_NE(r.err.find("d.png"), std::string::npos) << r.err;
+	EXPECT_EQ(readTextFile(path("d.csv")), "the earlier result\n");
+	for (const auto &entry : fs::directory_iterator(dir_))
+		EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+
+	// calped-convert onto a FIFO (a device node in the issue): refused, the FIFO stays.
+	const char *shared = std::getenv("CALPED_SHARED_DIR");
+	const std::string mat = std::string(shared ? shared : "../shared") + "/models/dollar-toolbox/AcfInriaDetector.mat";
+	ASSERT_EQ(mkfifo(path("out.cpm").c_str(), 0600), 0);
+	const ProcessResult c = runProcess(gConvertPath, { mat, path("out.cpm") }, dir_);
+	EXPECT_EQ(c.exitCode, 1) << c.err;
+	EXPECT_NE(c.err.find("exists and is not a regular file (not replaced)"), std::string::npos) << c.err;
+	EXPECT_TRUE(fs::is_fifo(path("out.cpm")));
+}
+
 TEST_F(CliRunTest, UnwritableOutputIsARuntimeError)
 {
 	ProcessResult r = detect({ "--model", model_, "--csv", path("no/such/dir/d.csv"), path("frames") });
@@ -699,9 +770,6 @@ int main(int argc, char **argv)
 			gConvertPath = a.substr(10);
 	}
 	int rc = RUN_ALL_TESTS();
-	if (!gModelDir.empty()) {
-		std::error_code ec;
-		fs::remove_all(gModelDir, ec);
-	}
+	calped::test::removeConvertedModel();
 	return rc;
 }

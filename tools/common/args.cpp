@@ -204,6 +204,11 @@ bool parseNumber(const std::string &text, double &out)
 {
 	if (text.empty() || startsWithSpace(text))
 		return false;
+	// Decimal only: strtod also reads hexadecimal ("0x2" would be 2), "inf" and "nan".
+	for (char c : text)
+		if (!std::isdigit(static_cast<unsigned char>(c)) && c != '.' && c != 'e' && c != 'E' &&
+		    c != '+' && c != '-')
+			return false;
 	errno = 0;
 	char *end = nullptr;
 	const double v = std::strtod(text.c_str(), &end);

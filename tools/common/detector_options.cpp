@@ -201,7 +201,7 @@ bool checkDetectorOptions(DetectorOptions &o, bool requireModel, DetectorFlags w
 bool loadModelFile(const std::string &path, Model &model, std::string &error)
 {
 	std::vector<uint8_t> blob;
-	if (!readFile(path, blob, error, "model "))
+	if (!readFile(path, blob, error, "model ", kMaxModelFileBytes))
 		return false;
 	const Status st = loadModel(blob.data(), blob.size(), model);
 	if (!st.ok()) {
@@ -214,7 +214,7 @@ bool loadModelFile(const std::string &path, Model &model, std::string &error)
 bool loadCalibrationFile(const std::string &path, CameraModel &camera, std::string &error)
 {
 	std::vector<uint8_t> text;
-	if (!readFile(path, text, error, "calibration "))
+	if (!readFile(path, text, error, "calibration ", kMaxCalibrationFileBytes))
 		return false;
 	const Status st = loadCalibration(reinterpret_cast<const char *>(text.data()), text.size(),
 					  path.c_str(), camera);

@@ -7,20 +7,21 @@
 #include <filesystem>
 #include <system_error>
 
+#include "atomic_file.h"
 #include "image_io.h"
 
 namespace calped::apps {
 
 bool readFile(const std::string &path, std::vector<uint8_t> &out, std::string &error,
-	      const std::string &what)
+	      const std::string &what, size_t maxBytes)
 {
-	return ports::readFileBytes(path, out, error, what);
+	return ports::readFileBytes(path, out, error, what, maxBytes);
 }
 
-bool readTextFile(const std::string &path, std::string &out, std::string &error)
+bool readTextFile(const std::string &path, std::string &out, std::string &error, size_t maxBytes)
 {
 	std::vector<uint8_t> bytes;
-	if (!readFile(path, bytes, error))
+	if (!readFile(path, bytes, error, "", maxBytes))
 		return false;
 	out.assign(bytes.begin(), bytes.end());
 	return true;
@@ -28,18 +29,11 @@ bool readTextFile(const std::string &path, std::string &out, std::string &error)
 
 bool writeTextFile(const std::string &path, const std::string &text, std::string &error)
 {
-	FILE *f = std::fopen(path.c_str(), "w");
-	if (!f) {
-		error = "cannot write " + path + ": " + std::strerror(errno);
+	ports::AtomicFile f; // renamed into place only when whole
+	if (!f.open(path, error))
 		return false;
-	}
-	const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
-	const int savedErrno = errno;
-	if (std::fclose(f) != 0 || !ok) {
-		error = "cannot write " + path + ": " + (savedErrno ? std::strerror(savedErrno) : "write error");
-		return false;
-	}
-	return true;
+	std::fwrite(text.data(), 1, text.size(), f.get());
+	return f.commit(error);
 }
 
 bool isRegularFile(const std::string &path)

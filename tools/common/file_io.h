@@ -6,14 +6,23 @@
 #include <string>
 #include <vector>
 
+#include "image_io.h"
+
 namespace calped::apps {
 
-// Reads a whole file into memory. `what` names the file's role in the error ("model ").
-bool readFile(const std::string &path, std::vector<uint8_t> &out, std::string &error,
-	      const std::string &what = "");
+using ports::kMaxCalibrationFileBytes;
+using ports::kMaxModelFileBytes;
+using ports::kMaxTableFileBytes;
 
-// The same as text, and writing a whole text file ("-" is not special).
-bool readTextFile(const std::string &path, std::string &out, std::string &error);
+// Reads a whole regular file into memory, at most maxBytes (ports::kMax*FileBytes, by the
+// file's kind; docs/errors.md). `what` names the file's role in the error ("model ").
+bool readFile(const std::string &path, std::vector<uint8_t> &out, std::string &error,
+	      const std::string &what, size_t maxBytes);
+
+// The same as text (a table: CSV, ground truth; ports::kMaxTableFileBytes unless told),
+// and writing a whole text file ("-" is not special).
+bool readTextFile(const std::string &path, std::string &out, std::string &error,
+		  size_t maxBytes = kMaxTableFileBytes);
 bool writeTextFile(const std::string &path, const std::string &text, std::string &error);
 
 // True for an existing regular file (symlinks followed).

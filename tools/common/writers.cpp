@@ -7,11 +7,7 @@
 
 namespace calped::apps {
 
-OutputFile::~OutputFile()
-{
-	if (file_ && !isStdout_)
-		std::fclose(file_);
-}
+OutputFile::~OutputFile() = default; // a file not closed: atomic_ removes the temporary
 
 bool OutputFile::open(const std::string &path, std::string &error)
 {
@@ -21,11 +17,9 @@ bool OutputFile::open(const std::string &path, std::string &error)
 		isStdout_ = true;
 		return true;
 	}
-	file_ = std::fopen(path.c_str(), "w");
-	if (!file_) {
-		error = "cannot write " + path + ": " + std::strerror(errno);
+	if (!atomic_.open(path, error))
 		return false;
-	}
+	file_ = atomic_.get();
 	return true;
 }
 
@@ -33,16 +27,13 @@ bool OutputFile::close(std::string &error)
 {
 	if (!file_)
 		return true;
-	errno = 0;
-	bool ok = std::fflush(file_) == 0 && !std::ferror(file_);
-	int savedErrno = errno;
-	if (!isStdout_)
-		ok = (std::fclose(file_) == 0) && ok;
 	file_ = nullptr;
-	if (!ok) {
-		const char *why = savedErrno ? std::strerror(savedErrno) : "write error";
-		error = "cannot write " + (isStdout_ ? std::string("standard output") : path_) + ": " + why;
-	}
+	if (!isStdout_)
+		return atomic_.commit(error);
+	errno = 0;
+	const bool ok = std::fflush(stdout) == 0 && !std::ferror(stdout);
+	if (!ok)
+		error = std::string("cannot write standard output: ") + (errno ? std::strerror(errno) : "write error");
 	return ok;
 }
 

@@ -8,6 +8,8 @@
 
 #include <calped/detector.h>
 
+#include "atomic_file.h"
+
 namespace calped::apps {
 
 class OutputFile
@@ -18,15 +20,17 @@ public:
 	OutputFile(const OutputFile &) = delete;
 	OutputFile &operator=(const OutputFile &) = delete;
 
-	// "-" opens standard output.
+	// "-" opens standard output. A file is written beside its name and renamed into place
+	// by close(): a failed run leaves what was there before (ports/file/atomic_file.h).
 	bool open(const std::string &path, std::string &error);
 	bool isOpen() const { return file_ != nullptr; }
 	FILE *get() { return file_; }
-	// Flushes and closes; fails if any earlier write failed.
+	// Flushes and closes (a file: renamed into place); fails if any earlier write failed.
 	bool close(std::string &error);
 
 private:
 	FILE *file_ = nullptr;
+	ports::AtomicFile atomic_; // a file: written beside its name, renamed by close()
 	std::string path_;
 	bool isStdout_ = false;
 };

@@ -17,6 +17,7 @@
 #include <calped/status.h>
 
 #include "array_dump.h"
+#include "atomic_file.h"
 #include "detector_clf.h"
 #include "detector_opts.h"
 #include "mat_reader.h"
@@ -104,15 +105,15 @@ void capAddressSpace(const std::string &input)
 
 Status writeFile(const std::string &path, const std::vector<uint8_t> &bytes)
 {
-	std::FILE *f = std::fopen(path.c_str(), "wb");
-	if (!f)
-		return Status::error(ErrorCode::IoError, "cannot create %s: %s", path.c_str(),
-				     std::strerror(errno));
-	const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-	if (std::fclose(f) != 0 || !written) {
-		std::remove(path.c_str()); // never leave a partial model behind
-		return Status::error(ErrorCode::IoError, "cannot write %s", path.c_str());
-	}
+	// Beside the name, renamed on success: a failure never removes what was at `path`
+	// (removing it on a write error once deleted a device node).
+	ports::AtomicFile f;
+	std::string error;
+	if (!f.open(path, error))
+		return Status::error(ErrorCode::IoError, "%s", error.c_str());
+	std::fwrite(bytes.data(), 1, bytes.size(), f.get());
+	if (!f.commit(error))
+		return Status::error(ErrorCode::IoError, "%s", error.c_str());
 	return Status::success();
 }
 

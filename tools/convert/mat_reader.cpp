@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <sys/stat.h>
 
 #include <matio.h>
 
@@ -65,7 +66,16 @@ Status MatFile::open(const std::string &path)
 {
 	Mat_LogInitFunc("calped-convert", matioLog);
 	path_ = path;
-	// fopen first: matio does not say why a file could not be opened.
+	// A regular file only (a FIFO would block, a device never end), of a bounded size;
+	// then fopen: matio does not say why a file could not be opened.
+	struct stat info;
+	if (::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode))
+		return Status::error(ErrorCode::IoError, "cannot read %s: not a regular file (a FIFO or device)",
+				     path.c_str());
+	constexpr long long kMaxMatBytes = 256ll << 20; // the toolbox's models are 0.1-3 MB
+	if (::stat(path.c_str(), &info) == 0 && info.st_size > kMaxMatBytes)
+		return Status::error(ErrorCode::IoError, "cannot read %s: %lld bytes, over the %lld-byte limit for a MAT file",
+				     path.c_str(), static_cast<long long>(info.st_size), kMaxMatBytes);
 	std::FILE *f = std::fopen(path.c_str(), "rb");
 	if (!f)
 		return Status::error(ErrorCode::IoError, "cannot open %s: %s", path.c_str(),

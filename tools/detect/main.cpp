@@ -2,7 +2,6 @@
 // calped-detect: runs the detector over image files, folders or videos and writes CSV,
 // MOTChallenge detections, JSON Lines and overlay images. See docs/cli.md.
 #include <algorithm>
-#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -22,6 +21,7 @@
 #include "overlay.h"
 #include "program.h"
 #include "progress.h"
+#include "stop_signal.h"
 #include "video_pipe.h"
 #include "writers.h"
 
@@ -40,7 +40,10 @@ const ProgramInfo kProgram = {
 	"\n"
 	"options:\n",
 	"\n"
-	"exit status: 0 success, 1 runtime error, 2 usage error\n",
+	"SIGINT and SIGTERM stop after the current frame: the outputs end with that frame's\n"
+	"complete lines, exit status 128 + the signal (130, 143).\n"
+	"\n"
+	"exit status: 0 success, 1 runtime error, 2 usage error, 130/143 stopped by a signal\n",
 };
 
 struct Options {
@@ -257,9 +260,15 @@ int run(const Options &opt)
 		for (;;) {
 			if (opt.maxFrames > 0 && frame >= opt.maxFrames)
 				break;
+			if (stopRequested())
+				break;
 			if (in.video) {
-				const Status st = pipe.read(image.pixels.data());
-				if (st.code() == ErrorCode::EndOfStream)
+				// Short waits, so that a stop signal is seen however slow ffmpeg is.
+				Status st;
+				do
+					st = pipe.read(image.pixels.data(), 200);
+				while (st.code() == ErrorCode::Timeout && !stopRequested());
+				if (st.code() == ErrorCode::EndOfStream || st.code() == ErrorCode::Timeout)
 					break;
 				if (!st.ok())
 					return fail(kExitRuntime, st.message());
@@ -294,8 +303,10 @@ int run(const Options &opt)
 				break; // one frame per image
 		}
 		pipe.close();
+		if (stopRequested())
+			break;
 	}
-	if (frame == 0)
+	if (frame == 0 && !stopRequested())
 		return fail(kExitRuntime, "no frames in the inputs");
 
 	closeMqtt(out.mqtt, kProgram.name, opt.quiet);
@@ -306,7 +317,7 @@ int run(const Options &opt)
 		if (!loaded.hasCamera && !opt.detector.calibAuto())
 			std::fprintf(stderr, "%s: %s\n", kProgram.name, kGenericHint);
 	}
-	return 0;
+	return stopRequested() ? stopExitCode() : 0;
 }
 
 } // namespace
@@ -317,8 +328,9 @@ int main(int argc, char **argv)
 {
 	using namespace calped::apps;
 
-	// A closed pipe on --jsonl - becomes a reported write error instead of a silent death.
-	std::signal(SIGPIPE, SIG_IGN);
+	// SIGINT/SIGTERM finish the current frame; a closed pipe on --jsonl - becomes a
+	// reported write error instead of a silent death.
+	installStopHandlers();
 
 	Options opt;
 	const int rc = parseOptions(argc, argv, opt);

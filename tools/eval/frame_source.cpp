@@ -9,6 +9,7 @@
 
 #include "args.h"
 #include "frame_list.h"
+#include "stop_signal.h"
 #include "video_pipe.h"
 #include "external_tools.h"
 #include "text_fields.h"
@@ -56,11 +57,17 @@ public:
 		image.width = input_.width;
 		image.height = input_.height;
 		image.pixels.resize(static_cast<size_t>(input_.width) * input_.height * 3);
-		const Status st = pipe_.read(image.pixels.data());
+		// Short waits, so that a stop signal is seen however slow ffmpeg is.
+		Status st;
+		do
+			st = pipe_.read(image.pixels.data(), 200);
+		while (st.code() == ErrorCode::Timeout && !apps::stopRequested());
 		if (st.ok()) {
 			frames_++;
 			return true;
 		}
+		if (st.code() == ErrorCode::Timeout)
+			return false; // stopped: runMethod() reports it
 		if (st.code() != ErrorCode::EndOfStream)
 			error = st.message();
 		else if (frames_ == 0)

@@ -2,7 +2,6 @@
 // calped-eval: the detector over a sequence against ground truth, for every (method, resize),
 // with the thesis-style table, JSON, detection CSVs, plots and overlays. docs/evaluation.md.
 #include <algorithm>
-#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -22,6 +21,7 @@
 #include "frame_source.h"
 #include "ground_truth.h"
 #include "markdown_report.h"
+#include "stop_signal.h"
 #include "methods.h"
 #include "metrics.h"
 #include "overlay_frames.h"
@@ -206,8 +206,11 @@ int run(const EvalOptions &opt)
 			    (opt.jobs > 1 ? ", " + std::to_string(opt.jobs) + " at a time" : ""));
 
 	std::vector<RunResult> runs;
-	if (!runAll(specs, settings, opt.jobs, runs, error))
+	if (!runAll(specs, settings, opt.jobs, runs, error)) {
+		if (calped::apps::stopRequested())
+			return calped::apps::stopExitCode(); // no scores from a partial run
 		return fail(kExitRuntime, error);
+	}
 
 	const long frames = runs.front().frames;
 	for (RunResult &r : runs) {
@@ -247,7 +250,9 @@ int main(int argc, char **argv)
 {
 	using namespace calped::eval_tool;
 
-	std::signal(SIGPIPE, SIG_IGN); // a closed pipe becomes a reported write error
+	// SIGINT/SIGTERM: each run finishes its frame, exit 128 + the signal; a closed pipe
+	// becomes a reported write error.
+	calped::apps::installStopHandlers();
 	EvalOptions opt;
 	std::string error;
 	if (!parseEvalOptions(argc, argv, opt, error))

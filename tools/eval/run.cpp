@@ -10,6 +10,7 @@
 #include "json_frame.h"
 #include "writers.h"
 #include "overlay_frames.h"
+#include "stop_signal.h"
 
 namespace calped::eval_tool {
 
@@ -69,6 +70,8 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 	RgbImage image;
 	Clock::time_point lastProgress = start;
 	for (long frame = 1;; frame++) {
+		if (apps::stopRequested())
+			break; // the frames so far keep their complete JSON lines
 		const Clock::time_point t0 = Clock::now();
 		if (!source->next(image, error)) {
 			if (!error.empty())
@@ -148,12 +151,16 @@ bool runMethod(const MethodEntry &entry, double resize, const RunSettings &s, Ru
 				     c.frames ? c.msTotal / c.frames : 0.0);
 		}
 	}
+	if (!jsonl.close(error))
+		return false;
+	if (apps::stopRequested()) {
+		error = "stopped by a signal after frame " + std::to_string(out.frames);
+		return false;
+	}
 	if (out.frames == 0) {
 		error = "no frames to process";
 		return false;
 	}
-	if (!jsonl.close(error))
-		return false;
 
 	if (c.frames > 0) {
 		const double n = static_cast<double>(c.frames);

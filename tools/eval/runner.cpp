@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "external_tools.h"
+#include "stop_signal.h"
 #include "overlay_frames.h"
 
 namespace calped::eval_tool {
@@ -181,6 +182,12 @@ bool runAll(const std::vector<RunSpec> &specs, const RunSettings &settings, int 
 	std::stable_sort(order.begin(), order.end(),
 			 [&](size_t a, size_t b) { return specs[a].resize > specs[b].resize; });
 	while (next < specs.size() || !running.empty()) {
+		if (apps::stopRequested()) {
+			// Each run finishes its frame and closes its outputs on the SIGTERM it gets.
+			stopChildren(running);
+			error = "stopped by a signal";
+			return false;
+		}
 		while (next < specs.size() && static_cast<int>(running.size()) < jobs) {
 			int fds[2];
 			if (pipe2(fds, O_CLOEXEC) != 0) {

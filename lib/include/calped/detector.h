@@ -100,6 +100,12 @@ struct DetectorConfig {
 	// Non-maximum suppression. false returns every window that passed the cascade (then
 	// the calibrated method's scoreRatio and boxVoting must be off too).
 	bool nms = true;
+	// Most memory create() may set aside for the frame-sized buffers, bytes (0: no limit).
+	// The need is estimated from the model and the frame size before anything is
+	// allocated (the largest pyramid image is the frame at resize * 2^nOctUp: about 40
+	// bytes per pixel of it); beyond the budget create() returns OutOfMemory with both
+	// numbers. The default, 1 GiB, takes a 1920x1080 frame at resize 3.5 with the INRIA model.
+	uint64_t memoryBudgetBytes = uint64_t(1) << 30;
 
 	// A camera (copied by create()) gives detections their ground position and world
 	// height, and is what the calibrated method needs. Its pixels are the input frame's

@@ -52,7 +52,7 @@ struct SelfCalibratingConfig {
 	// uncertain for a range in metres, which is therefore not applied), and the resize is at
 	// most the collecting phase's (people smaller than that one shows were not seen).
 	AutoResizeSettings autoResize;
-	double footRowQuantile = 0.05;
+	double footRowQuantile = 0.01;
 };
 
 class SelfCalibratingDetector

@@ -6,6 +6,7 @@
 
 #include "core/stage_clock.h"
 #include "detect/detector_impl.h"
+#include "detect/memory_estimate.h"
 #include "detect/world_coordinates.h"
 #include "search/generic_search.h"
 
@@ -19,6 +20,13 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	st = cfg.validate();
 	if (!st.ok())
 		return st;
+	const uint64_t need = estimateDetectorBytes(model.params, cfg);
+	if (cfg.memoryBudgetBytes != 0 && need > cfg.memoryBudgetBytes)
+		return Status::error(ErrorCode::OutOfMemory,
+				     "%dx%d frames at resize %g with the model's nOctUp %d need about %.2f GiB, "
+				     "over the memory budget of %.2f GiB (DetectorConfig::memoryBudgetBytes)",
+				     cfg.maxWidth, cfg.maxHeight, cfg.resize, int(model.params.nOctUp),
+				     double(need) / double(1 << 30), double(cfg.memoryBudgetBytes) / double(1 << 30));
 	config = cfg;
 	config.method = cfg.resolvedMethod();
 	calibrated_ = config.method == DetectionMethod::Calibrated;

@@ -56,10 +56,11 @@ Status validateGeometry(const ModelParams &p)
 		return invalid("modelDsPadH", p.modelDsPadH, "must be a multiple of shrink in [shrink, 1024]");
 	if (!inRange(p.modelDsPadW, p.shrink, 1024) || p.modelDsPadW % p.shrink != 0)
 		return invalid("modelDsPadW", p.modelDsPadW, "must be a multiple of shrink in [shrink, 1024]");
-	if (!(std::isfinite(p.modelDsH) && p.modelDsH > 0 && p.modelDsH <= p.modelDsPadH))
-		return invalidFloat("modelDsH", p.modelDsH, "must be in (0, modelDsPadH]");
-	if (!(std::isfinite(p.modelDsW) && p.modelDsW > 0 && p.modelDsW <= p.modelDsPadW))
-		return invalidFloat("modelDsW", p.modelDsW, "must be in (0, modelDsPadW]");
+	// At least one cell: a smaller window gives boxes of no height (1e-30 would pass > 0).
+	if (!(std::isfinite(p.modelDsH) && p.modelDsH >= p.shrink && p.modelDsH <= p.modelDsPadH))
+		return invalidFloat("modelDsH", p.modelDsH, "must be in [shrink, modelDsPadH]");
+	if (!(std::isfinite(p.modelDsW) && p.modelDsW >= p.shrink && p.modelDsW <= p.modelDsPadW))
+		return invalidFloat("modelDsW", p.modelDsW, "must be in [shrink, modelDsPadW]");
 	if (!inRange(p.stride, p.shrink, 1024) || p.stride % p.shrink != 0)
 		return invalid("stride", p.stride, "must be a positive multiple of shrink, at most 1024");
 	// |cascThr| * 2^16 must fit in int32 so the detector can compare in score fixed point.
