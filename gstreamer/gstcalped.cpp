@@ -14,10 +14,15 @@
 
 #include <gst/video/gstvideometa.h>
 
+#include <vector>
+
 #include <calped/calibration.h>
 #include <calped/detector.h>
 #include <calped/model.h>
+#include <calped/self_calibrating_detector.h>
 
+#include "frame_publisher.h"
+#include "json_frame.h"
 #include "video_frame.h"
 
 GST_DEBUG_CATEGORY_STATIC(gst_calped_debug);
@@ -28,7 +33,7 @@ namespace {
 using namespace calped;
 
 enum { PROP_0, PROP_MODEL, PROP_CALIBRATION, PROP_METHOD, PROP_RESIZE, PROP_RESIZE_AT,
-       PROP_LEVELS, PROP_REJECT_STATIC, PROP_MIN_SCORE, PROP_DRAW };
+       PROP_LEVELS, PROP_REJECT_STATIC, PROP_MIN_SCORE, PROP_DRAW, PROP_MQTT, PROP_CAMERA_ID };
 
 constexpr double kDefaultResize = 1.0;
 constexpr double kDefaultMinScore = -G_MAXDOUBLE;
@@ -43,6 +48,7 @@ struct Settings {
 	bool rejectStatic = false;
 	double minScore = kDefaultMinScore;
 	bool draw = false;
+	std::string mqtt, cameraId; // mqtt://HOST[:PORT]/TOPIC (docs/mqtt.md); empty: none
 };
 
 // Everything made from the settings: from start() (model, camera) and set_info() (the
@@ -52,7 +58,11 @@ struct Session {
 	bool hasModel = false;
 	CameraModel camera;
 	bool hasCamera = false;
+	bool calibAuto = false; // calibration=auto: selfCalibrating instead of detector
 	std::unique_ptr<Detector> detector;
+	std::unique_ptr<SelfCalibratingDetector> selfCalibrating;
+	mqtt::FramePublisher publisher;
+	std::vector<Detection> published; // the reported detections of a frame, for the message
 	PixelFormat format = PixelFormat::RGB8;
 	YuvEncoding yuv = YuvEncoding::Bt601Limited;
 	const char *method = "";
@@ -168,10 +178,15 @@ bool loadCalibrationFile(GstCalped *self, const Settings &s, Session &session)
 	if (s.calibration.empty())
 		return true;
 	if (s.calibration == "auto") {
-		GST_ELEMENT_ERROR(self, RESOURCE, SETTINGS,
-				  ("calibration=auto (self-calibration) is not implemented yet: give a calibration file"),
-				  (nullptr));
-		return false;
+		if (s.method != DetectionMethod::Auto) {
+			GST_ELEMENT_ERROR(self, RESOURCE, SETTINGS,
+					  ("calibration=auto runs the generic method, then the calibrated one: "
+					   "leave method at auto"),
+					  (nullptr));
+			return false;
+		}
+		session.calibAuto = true;
+		return true;
 	}
 	gchar *data = nullptr;
 	gsize size = 0;
@@ -214,12 +229,33 @@ gboolean calpedStart(GstBaseTransform *trans)
 	const Settings s = snapshot(self);
 	delete self->session;
 	self->session = new Session();
-	return loadModelFile(self, s, *self->session) && loadCalibrationFile(self, s, *self->session);
+	if (!loadModelFile(self, s, *self->session) || !loadCalibrationFile(self, s, *self->session))
+		return FALSE;
+	if (!s.cameraId.empty() && s.mqtt.empty()) {
+		GST_ELEMENT_ERROR(self, RESOURCE, SETTINGS, ("camera-id is for mqtt: set mqtt too"), (nullptr));
+		return FALSE;
+	}
+	if (!s.mqtt.empty()) {
+		// Connects now: an unreachable broker is an error at start, not a silent loss.
+		mqtt::FramePublisherOptions options;
+		options.url = s.mqtt;
+		options.cameraId = s.cameraId;
+		std::string error;
+		if (!self->session->publisher.open(options, error)) {
+			GST_ELEMENT_ERROR(self, RESOURCE, OPEN_WRITE, ("%s", error.c_str()), (nullptr));
+			return FALSE;
+		}
+	}
+	return TRUE;
 }
 
 gboolean calpedStop(GstBaseTransform *trans)
 {
 	GstCalped *self = GST_CALPED(trans);
+	if (self->session && self->session->publisher.isOpen()) {
+		self->session->publisher.close();
+		GST_INFO_OBJECT(self, "%s", self->session->publisher.summary().c_str());
+	}
 	delete self->session;
 	self->session = nullptr;
 	return TRUE;
@@ -234,6 +270,7 @@ gboolean calpedSetInfo(GstVideoFilter *filter, GstCaps *, GstVideoInfo *in, GstC
 		return FALSE;
 	}
 	session->detector.reset(); // a new size: a new detector (and a new static background)
+	session->selfCalibrating.reset();
 	if (!gst::pixelFormatFor(GST_VIDEO_INFO_FORMAT(in), session->format)) {
 		GST_ELEMENT_ERROR(self, STREAM, FORMAT, ("unsupported format %s",
 				  gst_video_format_to_string(GST_VIDEO_INFO_FORMAT(in))), (nullptr));
@@ -251,14 +288,33 @@ gboolean calpedSetInfo(GstVideoFilter *filter, GstCaps *, GstVideoInfo *in, GstC
 		return FALSE;
 	}
 	const DetectorConfig config = configFor(s, *session, width, height);
-	const Status st = Detector::create(session->model, config, session->detector);
+	Status st;
+	if (session->calibAuto) {
+		SelfCalibratingConfig sc;
+		sc.detector = config;
+		sc.detector.method = DetectionMethod::Auto;
+		CalibratedSettings cal;
+		cal.levels = s.levels;
+		sc.detector.calibrated = cal;
+		st = SelfCalibratingDetector::create(session->model, sc, session->selfCalibrating);
+	} else {
+		st = Detector::create(session->model, config, session->detector);
+	}
 	if (!st.ok()) {
 		GST_ELEMENT_ERROR(self, LIBRARY, SETTINGS,
 				  ("cannot set up the detector for %dx%d frames: %s", width, height, st.message()),
 				  (nullptr));
 		return FALSE;
 	}
-	session->method = methodName(session->detector->config().resolvedMethod());
+	try {
+		// Never more detections than candidates: publishing then allocates nothing per frame.
+		session->published.reserve(size_t(config.maxCandidates));
+	} catch (const std::bad_alloc &) {
+		GST_ELEMENT_ERROR(self, RESOURCE, NO_SPACE_LEFT, ("out of memory"), (nullptr));
+		return FALSE;
+	}
+	session->method = session->detector ? methodName(session->detector->config().resolvedMethod())
+					    : methodName(DetectionMethod::Generic);
 	GST_INFO_OBJECT(self, "detector for %dx%d %s frames, %s method", width, height,
 			gst_video_format_to_string(GST_VIDEO_INFO_FORMAT(in)), session->method);
 	return TRUE;
@@ -291,6 +347,10 @@ void postFrameMessage(GstCalped *self, const Session &session, GstClockTime pts,
 		"method", G_TYPE_STRING, session.method,
 		"ms", G_TYPE_DOUBLE, msDetector,
 		"ms-element", G_TYPE_DOUBLE, msElement, nullptr);
+	// calibration=auto: the camera estimate in use (0 while collecting).
+	if (session.selfCalibrating)
+		gst_structure_set(s, "camera-estimate", G_TYPE_INT, session.selfCalibrating->cameraEstimate(),
+				  nullptr);
 	gst_element_post_message(GST_ELEMENT(self), gst_message_new_element(GST_OBJECT(self), s));
 }
 
@@ -302,7 +362,7 @@ GstFlowReturn calpedTransformIp(GstBaseTransform *trans, GstBuffer *buf)
 	GstCalped *self = GST_CALPED(trans);
 	GstVideoFilter *filter = GST_VIDEO_FILTER(trans);
 	Session *session = self->session;
-	if (!filter->negotiated || !session || !session->detector) {
+	if (!filter->negotiated || !session || (!session->detector && !session->selfCalibrating)) {
 		GST_ELEMENT_ERROR(self, CORE, NOT_IMPLEMENTED, ("a buffer before the caps"), (nullptr));
 		return GST_FLOW_NOT_NEGOTIATED;
 	}
@@ -320,7 +380,11 @@ GstFlowReturn calpedTransformIp(GstBaseTransform *trans, GstBuffer *buf)
 	}
 	session->frames++;
 	Detections dets;
-	const Status st = session->detector->detect(gst::imageViewOf(frame, session->format, session->yuv), dets);
+	const ImageView view = gst::imageViewOf(frame, session->format, session->yuv);
+	const Status st = session->detector ? session->detector->detect(view, dets)
+					    : session->selfCalibrating->detect(view, dets);
+	if (session->selfCalibrating)
+		session->method = methodName(session->selfCalibrating->lastMethod());
 	double msDetector = 0;
 	if (st.code() == ErrorCode::ImageTooSmall) {
 		if (!session->warnedTooSmall)
@@ -333,11 +397,13 @@ GstFlowReturn calpedTransformIp(GstBaseTransform *trans, GstBuffer *buf)
 		GST_ELEMENT_ERROR(self, STREAM, FAILED, ("detection failed: %s", st.message()), (nullptr));
 		return GST_FLOW_ERROR;
 	} else {
-		msDetector = session->detector->lastStats().msTotal;
+		msDetector = session->detector ? session->detector->lastStats().msTotal
+					       : session->selfCalibrating->lastStats().msTotal;
 	}
 
 	const int width = GST_VIDEO_FRAME_WIDTH(&frame), height = GST_VIDEO_FRAME_HEIGHT(&frame);
 	guint count = 0;
+	session->published.clear();
 	for (const Detection &d : dets) {
 		if (d.score < minScore)
 			continue;
@@ -345,8 +411,26 @@ GstFlowReturn calpedTransformIp(GstBaseTransform *trans, GstBuffer *buf)
 		addMeta(buf, d, box, count++);
 		if (draw)
 			gst::drawBox(frame, box);
+		if (session->publisher.isOpen())
+			session->published.push_back(d);
 	}
 	gst_video_frame_unmap(&frame);
+	if (session->publisher.isOpen()) {
+		apps::JsonFrame record;
+		record.frame = static_cast<long long>(session->frames);
+		record.method = session->method;
+		record.cameraEstimate = session->selfCalibrating ? session->selfCalibrating->cameraEstimate() : -1;
+		record.width = width;
+		record.height = height;
+		record.ms = msDetector;
+		if (GST_BUFFER_PTS_IS_VALID(buf))
+			record.timestampNs = static_cast<int64_t>(GST_BUFFER_PTS(buf));
+		Detections reported;
+		reported.items = session->published.data();
+		reported.count = static_cast<int>(session->published.size());
+		// Never blocks: a full queue drops the message and counts it (docs/mqtt.md).
+		session->publisher.publish(record, reported);
+	}
 	const double msElement =
 		std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	postFrameMessage(self, *session, GST_BUFFER_PTS(buf), static_cast<int>(count), msDetector, msElement);
@@ -385,6 +469,12 @@ void calpedSetProperty(GObject *object, guint id, const GValue *value, GParamSpe
 		break;
 	case PROP_DRAW:
 		s.draw = g_value_get_boolean(value);
+		break;
+	case PROP_MQTT:
+		s.mqtt = g_value_get_string(value) ? g_value_get_string(value) : "";
+		break;
+	case PROP_CAMERA_ID:
+		s.cameraId = g_value_get_string(value) ? g_value_get_string(value) : "";
 		break;
 	default:
 		G_OBJECT_WARN_INVALID_PROPERTY_ID(object, id, pspec);
@@ -425,6 +515,12 @@ void calpedGetProperty(GObject *object, guint id, GValue *value, GParamSpec *psp
 		break;
 	case PROP_DRAW:
 		g_value_set_boolean(value, s.draw);
+		break;
+	case PROP_MQTT:
+		g_value_set_string(value, s.mqtt.empty() ? nullptr : s.mqtt.c_str());
+		break;
+	case PROP_CAMERA_ID:
+		g_value_set_string(value, s.cameraId.empty() ? nullptr : s.cameraId.c_str());
 		break;
 	default:
 		G_OBJECT_WARN_INVALID_PROPERTY_ID(object, id, pspec);
@@ -468,7 +564,8 @@ static void gst_calped_class_init(GstCalpedClass *klass)
 		g_param_spec_string("calibration", "Calibration",
 				    "camera calibration file (Tsai XML, OpenCV YAML, Town Centre .ci, projection "
 				    "matrix); gives ground positions and world heights and enables the calibrated "
-				    "method; 'auto' (self-calibration) is reserved and not implemented yet",
+				    "method; 'auto': estimated from the people found (the generic method runs "
+				    "until then, at the resize property; docs/calibration.md)",
 				    nullptr, kReady));
 	g_object_class_install_property(gobject, PROP_METHOD,
 		g_param_spec_enum("method", "Method", "detection method", methodEnumType(),
@@ -497,6 +594,15 @@ static void gst_calped_class_init(GstCalpedClass *klass)
 		g_param_spec_boolean("draw", "Draw",
 				     "draw the boxes into the frame (RGB, BGR, GRAY8; the luma of YUV formats)",
 				     FALSE, kPlaying));
+
+	g_object_class_install_property(gobject, PROP_MQTT,
+		g_param_spec_string("mqtt", "MQTT",
+				    "publish each frame's detections as one JSON message (QoS 1) to "
+				    "mqtt://HOST[:PORT]/TOPIC (docs/mqtt.md); the broker must be reachable at start",
+				    nullptr, kReady));
+	g_object_class_install_property(gobject, PROP_CAMERA_ID,
+		g_param_spec_string("camera-id", "Camera id",
+				    "the camera's id in MQTT messages (default: the host name)", nullptr, kReady));
 
 	GstCaps *caps = gst_caps_from_string(GST_VIDEO_CAPS_MAKE(CALPED_GST_FORMATS));
 	gst_element_class_add_pad_template(element, gst_pad_template_new("sink", GST_PAD_SINK, GST_PAD_ALWAYS, caps));

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // One MQTT message per frame (docs/mqtt.md): the JSON frame record (tools/json) with the
 // camera's id and the wall-clock time, published through a Publisher. Shared by
-// calped-detect and the live programs (the GStreamer element could use it too; it does not yet).
+// calped-detect, the live programs and the GStreamer element.
 #pragma once
 
 #include <memory>

@@ -333,3 +333,54 @@ def test_ground_plan_example_draws_real_messages(broker, folder):
         assert "%s %s: frame 2, %d people" % (letter, cam, len(people)) in text, text
     rows = [line for line in text.splitlines() if line.startswith("|")]
     assert any("A" in row or "*" in row for row in rows), text
+
+
+def gst_launch():
+    if os.environ.get("CALPED_GSTCALPED") != "1":
+        pytest.skip("the GStreamer element is not built here (libgstreamer1.0-dev)")
+    if SANITIZED:
+        pytest.skip("an instrumented plugin cannot load into gst-launch-1.0 (sanitizer build)")
+    path = shutil.which("gst-launch-1.0")
+    if not path:
+        pytest.skip("no gst-launch-1.0 (Debian: gstreamer1.0-tools)")
+    return path
+
+
+def element_pipeline(launch, frames, properties):
+    return [launch, "-q", "multifilesrc", "location=%s/%%06d.png" % FRAMES, "index=1",
+            "stop-index=%d" % frames, "caps=image/png,framerate=10/1", "!", "pngdec", "!",
+            "videoconvert", "!", "calped", "model=" + model()] + properties + ["!", "fakesink"]
+
+
+def test_gstreamer_element_publishes_each_frame_with_calibration_auto(broker, folder):
+    launch = gst_launch()
+    frames_needed(4)
+    sub = Subscriber(broker, folder)
+    r = subprocess.run(element_pipeline(launch, 4, [
+        "calibration=auto", "resize=2", "mqtt=" + broker.url("calped/gst1/detections"), "camera-id=gst1"]),
+        capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    deadline = time.monotonic() + 20
+    while len(sub.messages()) < 4 and time.monotonic() < deadline:
+        time.sleep(0.1)
+    sub.stop()
+    messages = sub.messages()
+    assert [m["frame"] for _, m in messages] == [1, 2, 3, 4]
+    for topic, m in messages:
+        assert topic == "calped/gst1/detections"
+        assert m["camera"] == "gst1"
+        # Four frames are too few people to estimate the camera: the generic method, no estimate.
+        assert (m["method"], m["camera_estimate"]) == ("generic", 0)
+        assert (m["width"], m["height"]) == (768, 576)
+    assert any(m["detections"] for _, m in messages), "PETS frames 1-4 show people"
+
+
+def test_gstreamer_element_refuses_an_unreachable_broker_at_start(folder):
+    need_mqtt()
+    launch = gst_launch()
+    frames_needed(1)
+    port = free_port()
+    r = subprocess.run(element_pipeline(launch, 1, ["mqtt=mqtt://127.0.0.1:%d/calped/x/detections" % port]),
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode != 0
+    assert "cannot connect to the MQTT broker 127.0.0.1:%d" % port in r.stdout + r.stderr
