@@ -96,6 +96,48 @@ TEST(BoundedMemory, DetectAllocatesNothingSynthetic)
 	}
 }
 
+// --calib auto's collecting phase: the generic method plus the observation buffer. A random
+// model's confident boxes are no people to calibrate from: every frame collects, none
+// estimates (estimates may allocate; collecting frames may not).
+TEST(BoundedMemory, SelfCalibratingCollectingFramesAllocateNothing)
+{
+	const Model model = test::randomModel(7, 512);
+	SelfCalibratingConfig cfg;
+	cfg.detector.maxWidth = 320;
+	cfg.detector.maxHeight = 240;
+	cfg.detector.resize = 1.0;
+	cfg.estimateEvery = 1000;
+	std::unique_ptr<SelfCalibratingDetector> det;
+	ASSERT_TRUE(SelfCalibratingDetector::create(model, cfg, det).ok());
+	std::vector<std::vector<uint8_t>> frames;
+	for (uint32_t s = 0; s < 4; s++)
+		frames.push_back(test::randomImage(s, 320, 240));
+	Detections out;
+	ASSERT_TRUE(det->detect(ImageView::rgb8(frames[0].data(), 320, 240), out).ok()); // warm
+	test::startCountingAllocations();
+	for (int k = 0; k < 20; k++)
+		EXPECT_TRUE(det->detect(ImageView::rgb8(frames[size_t(k) % 4].data(), 320, 240), out).ok());
+	const long allocations = test::stopCountingAllocations();
+	EXPECT_EQ(allocations, 0);
+	EXPECT_EQ(det->lastMethod(), DetectionMethod::Generic);
+	EXPECT_EQ(det->cameraEstimate(), 0);
+	// A camera in the configuration, another method, or settings out of range: refused.
+	CameraModel camera;
+	ASSERT_TRUE(makeSelfCalibratedCamera(800, 0.3, 0, 5, 160, 120, camera).ok());
+	SelfCalibratingConfig bad = cfg;
+	bad.detector.camera = &camera;
+	EXPECT_EQ(SelfCalibratingDetector::create(model, bad, det).code(), ErrorCode::InvalidArgument);
+	bad = cfg;
+	bad.detector.method = DetectionMethod::Generic;
+	EXPECT_EQ(SelfCalibratingDetector::create(model, bad, det).code(), ErrorCode::InvalidArgument);
+	bad = cfg;
+	bad.checkEvery = 0;
+	EXPECT_EQ(SelfCalibratingDetector::create(model, bad, det).code(), ErrorCode::InvalidArgument);
+	bad = cfg;
+	bad.minCheckFit = 1.5;
+	EXPECT_EQ(SelfCalibratingDetector::create(model, bad, det).code(), ErrorCode::InvalidArgument);
+}
+
 TEST(BoundedMemory, StaticRejectionAllocatesNothingAndDropsAStaticScene)
 {
 	// One random frame over and over: once the background is trusted, everything the

@@ -50,7 +50,9 @@ struct SelfCalibratingConfig {
 	// region of interest is where the people were seen: feet from the footRowQuantile-th
 	// quantile of the observations' foot rows down (the estimated focal length is too
 	// uncertain for a range in metres, which is therefore not applied), and the resize is at
-	// most the collecting phase's (people smaller than that one shows were not seen).
+	// most the collecting phase's (people smaller than that one shows were not seen). The
+	// check frames keep collecting, and a check that keeps the camera chooses again: a
+	// larger resize (people seen farther away) replaces the calibrated detector.
 	AutoResizeSettings autoResize;
 	double footRowQuantile = 0.01;
 };
@@ -89,6 +91,8 @@ private:
 	void tryEstimate();
 	void check(const Detections &generic);
 	double observedFootRow() const;
+	bool chooseCalibratedResize(const CameraModel &camera, double &out) const;
+	bool createCalibrated(double resize);
 
 	const Model &model_;
 	SelfCalibratingConfig config_;
@@ -96,7 +100,7 @@ private:
 	std::unique_ptr<Detector> generic_, calibrated_;
 	CameraModel camera_;
 	SelfCalibrationResult result_;
-	double calibratedResize_ = 0;
+	double calibratedResize_ = 0, pendingResize_ = 0;
 	long framesCollecting_ = 0, framesCalibrated_ = 0;
 	int checkSeen_ = 0, checkFit_ = 0;
 	int estimate_ = 0, changes_ = 0;

@@ -73,12 +73,8 @@ double SelfCalibratingDetector::observedFootRow() const
 	return rows[k];
 }
 
-void SelfCalibratingDetector::tryEstimate()
+bool SelfCalibratingDetector::chooseCalibratedResize(const CameraModel &camera, double &out) const
 {
-	if (calibrator_.size() < config_.selfCalibration.minInliers)
-		return;
-	if (calibrator_.estimate(result_) != SelfCalibrationVerdict::Ok)
-		return;
 	const DetectorConfig &d = config_.detector;
 	AutoResizeSettings resize = config_.autoResize;
 	resize.minPersonHeight = d.calibrated ? d.calibrated->minPersonHeight
@@ -87,20 +83,41 @@ void SelfCalibratingDetector::tryEstimate()
 	resize.minFootRow = observedFootRow();
 	resize.maxResize = std::clamp(d.resize, resize.minResize, resize.maxResize);
 	AutoResize chosen;
-	if (!chooseResize(model_.params, result_.camera, d.maxWidth, d.maxHeight, resize, chosen).ok())
-		return;
-	camera_ = result_.camera;
-	DetectorConfig c = d;
+	if (!chooseResize(model_.params, camera, d.maxWidth, d.maxHeight, resize, chosen).ok())
+		return false;
+	out = chosen.resize;
+	return true;
+}
+
+bool SelfCalibratingDetector::createCalibrated(double resize)
+{
+	DetectorConfig c = config_.detector;
 	c.camera = &camera_;
 	c.method = DetectionMethod::Calibrated;
-	c.resize = chosen.resize;
+	c.resize = resize;
 	c.resizeAt = ResizeAt::Pyramid;
 	if (!Detector::create(model_, c, calibrated_).ok()) {
 		calibrated_.reset();
+		return false;
+	}
+	calibratedResize_ = resize;
+	return true;
+}
+
+void SelfCalibratingDetector::tryEstimate()
+{
+	if (calibrator_.size() < config_.selfCalibration.minInliers)
+		return;
+	if (calibrator_.estimate(result_) != SelfCalibrationVerdict::Ok)
+		return;
+	double resize = 0;
+	if (!chooseCalibratedResize(result_.camera, resize))
+		return;
+	camera_ = result_.camera;
+	if (!createCalibrated(resize)) {
 		camera_ = CameraModel();
 		return;
 	}
-	calibratedResize_ = chosen.resize;
 	++estimate_;
 	framesCalibrated_ = 0;
 	checkSeen_ = checkFit_ = 0;
@@ -130,6 +147,11 @@ void SelfCalibratingDetector::check(const Detections &generic)
 		calibrator_.reset();
 		framesCollecting_ = 0;
 		++changes_;
+	} else {
+		// The camera holds; people seen since may reach rows the first choice did not.
+		double resize = 0;
+		if (chooseCalibratedResize(camera_, resize) && resize > calibratedResize_ + 1e-9)
+			pendingResize_ = resize;
 	}
 	checkSeen_ = checkFit_ = 0;
 }
@@ -137,6 +159,14 @@ void SelfCalibratingDetector::check(const Detections &generic)
 Status SelfCalibratingDetector::detect(const ImageView &image, Detections &out)
 {
 	const uint64_t frame = frameIndex_++;
+	if (calibrated_ && pendingResize_ > 0) {
+		// Before this frame's detect(): the last frame's detections lived in the old one.
+		const double resize = pendingResize_;
+		pendingResize_ = 0;
+		const double previous = calibratedResize_;
+		if (!createCalibrated(resize) && !createCalibrated(previous))
+			camera_ = CameraModel(); // neither: collect again
+	}
 	if (calibrated_) {
 		lastMethod_ = DetectionMethod::Calibrated;
 		const Status st = calibrated_->detect(image, out);
@@ -147,6 +177,7 @@ Status SelfCalibratingDetector::detect(const ImageView &image, Detections &out)
 			const Status gs = generic_->detect(image, generic);
 			if (!gs.ok())
 				return gs;
+			calibrator_.add(generic.items, size_t(generic.count), image.width, image.height, frame);
 			check(generic);
 			if (!calibrated_) {
 				// Dropped: this frame's detections are the generic method's.
