@@ -77,8 +77,9 @@ bool loadDetectorInputs(const DetectorOptions &options, DetectorInputs &out, std
 
 // What the programs print when they run without a camera.
 constexpr const char *kGenericHint =
-	"no camera: the generic method runs; --calib FILE runs the calibrated method, "
-	"faster and with fewer false positives (docs/calibration.md)";
+	"no camera: the generic method runs; --calib FILE, or --calib auto (the camera estimated "
+	"from the people found), runs the calibrated method, faster and with fewer false "
+	"positives (docs/calibration.md)";
 
 // THE DetectorConfig of the programs: frames up to width x height, `camera` (may be null
 // for the generic method) must outlive Detector::create.
