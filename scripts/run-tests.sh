@@ -28,6 +28,15 @@ fi
 
 failed_steps=()
 junits=()
+# Each step's wall time, printed at the end beside the total: what to look at when the run
+# nears CI's budget (docs/testing.md).
+step_times=()
+step_start=$SECONDS
+step_done() {
+	step_times+=("$1 $((SECONDS - step_start)) s")
+	step_start=$SECONDS
+}
+step_done set-up
 
 # run_suite NAME BUILDDIR [meson options...]: build, then meson test; failures are
 # recorded, not fatal, so the second tree still runs and the summary is always printed.
@@ -63,10 +72,12 @@ run_suite() {
 }
 
 run_suite release build -Dbuildtype=release -Dtests=true
+step_done release
 
 # The 'sanitize' test setup (tests/meson.build) makes every ASan, LSan and UBSan report fatal.
 SUITE_TEST_ARGS=--setup=sanitize run_suite sanitizers build-asan -Dbuildtype=debugoptimized \
 	-Db_sanitize=address,undefined -Db_lundef=false -Dtests=true
+step_done sanitizers
 
 # Every fuzz target briefly, on its seeds and what earlier runs found: one junit case each.
 echo
@@ -81,6 +92,7 @@ if [[ -f $fuzz_junit ]]; then
 else
 	failed_steps+=("fuzz: no junit log")
 fi
+step_done fuzz
 
 # ARM under emulation; the release tree's calped-convert prepares the model on the host.
 for target in ${CALPED_CROSS-aarch64}; do
@@ -100,6 +112,7 @@ for target in ${CALPED_CROSS-aarch64}; do
 	else
 		failed_steps+=("cross $target: no junit log")
 	fi
+	step_done "cross-$target"
 done
 
 read -r passed failed skipped < <(bash scripts/count-junit.sh "${junits[@]}")
@@ -115,6 +128,7 @@ if ((${#failed_steps[@]} > 0)); then
 fi
 
 echo
+echo "step times: $(IFS=,; echo "${step_times[*]}" | sed 's/,/, /g')"
 echo "test time: $((SECONDS - start)) s (${#junits[@]} junit logs)"
 rc=0
 if ((failed > 0 || ${#failed_steps[@]} > 0)); then
