@@ -169,6 +169,7 @@ Status SelfCalibratingDetector::detect(const ImageView &image, Detections &out)
 	}
 	if (calibrated_) {
 		lastMethod_ = DetectionMethod::Calibrated;
+		lastEstimate_ = estimate_;
 		const Status st = calibrated_->detect(image, out);
 		if (!st.ok())
 			return st;
@@ -182,12 +183,14 @@ Status SelfCalibratingDetector::detect(const ImageView &image, Detections &out)
 			if (!calibrated_) {
 				// Dropped: this frame's detections are the generic method's.
 				lastMethod_ = DetectionMethod::Generic;
+				lastEstimate_ = 0;
 				out = generic;
 			}
 		}
 		return Status::success();
 	}
 	lastMethod_ = DetectionMethod::Generic;
+	lastEstimate_ = 0;
 	const Status st = generic_->detect(image, out);
 	if (!st.ok())
 		return st;
