@@ -45,7 +45,8 @@ bool cropFrame(int k, int x0, int y0, int w, int h, std::vector<uint8_t> &crop)
 TEST(SelfCalibratingDetectorPets, BumpedCameraIsDroppedAndEstimatedAgain)
 {
 	if (test::petsFrame(400).empty())
-		GTEST_SKIP() << "needs PETS frames 1-400 (data/pets/frames; scripts/fetch-pets.sh)";
+		GTEST_SKIP() << "needs PETS frames 1-400 (bash scripts/fetch-pets.sh; the test command fetches "
+				"only 50)";
 	const std::string blob = test::inriaModelBlob();
 	std::vector<uint8_t> bytes;
 	if (blob.empty() || !test::readFile(blob, bytes))
