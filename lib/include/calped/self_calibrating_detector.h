@@ -43,7 +43,10 @@ struct SelfCalibratingConfig {
 	int checkEvery = 25;
 	// A check decides once this many confident generic detections were seen (>= 1), and
 	// drops the camera when fewer than minCheckFit of them (0..1) have a world height in
-	// the calibrated settings' plausible range.
+	// the calibrated settings' plausible range. While the boxes seen so far fail that
+	// test, every frame is a check frame until it decides (a sparse scene would otherwise
+	// need checkObservations / (boxes per frame) check frames, hundreds of frames, to notice
+	// a bumped camera).
 	int checkObservations = 30;
 	double minCheckFit = 0.5;
 	// The calibrated method's resize (its minPersonHeight is the calibrated settings'). The

@@ -173,7 +173,9 @@ Status SelfCalibratingDetector::detect(const ImageView &image, Detections &out)
 		const Status st = calibrated_->detect(image, out);
 		if (!st.ok())
 			return st;
-		if (++framesCalibrated_ % config_.checkEvery == 0) {
+		// The check so far failing: look again on this frame rather than checkEvery later.
+		const bool failing = checkSeen_ > 0 && checkFit_ < config_.minCheckFit * checkSeen_;
+		if (++framesCalibrated_ % config_.checkEvery == 0 || failing) {
 			Detections generic;
 			const Status gs = generic_->detect(image, generic);
 			if (!gs.ok())
