@@ -59,7 +59,11 @@ TEST(SelfCalibratingDetectorPets, BumpedCameraIsDroppedAndEstimatedAgain)
 	SelfCalibratingConfig config;
 	config.detector.maxWidth = w;
 	config.detector.maxHeight = h;
-	// Default checks (every 25th frame, then every frame while the boxes seen fail).
+	// Default checks (every 25th frame, then every frame while the boxes seen fail). The
+	// moved window keeps only the nearer people, whose estimate reaches the default 8% sd
+	// only after 100-300 frames (and later in the debugoptimized sanitizer build than in
+	// the release one): this test is about the switching, so it accepts 15%.
+	config.selfCalibration.maxRelativeSd = 0.15;
 	std::unique_ptr<SelfCalibratingDetector> det;
 	ASSERT_TRUE(SelfCalibratingDetector::create(model, config, det).ok());
 
