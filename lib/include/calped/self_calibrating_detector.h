@@ -43,7 +43,10 @@ struct SelfCalibratingConfig {
 	int checkEvery = 25;
 	// A check decides once this many confident generic detections were seen (>= 1), and
 	// drops the camera when fewer than minCheckFit of them (0..1) have a world height in
-	// the calibrated settings' plausible range.
+	// the calibrated settings' plausible range. While the boxes seen so far fail that
+	// test, every frame is a check frame until it decides (a sparse scene would otherwise
+	// need checkObservations / (boxes per frame) check frames, hundreds of frames, to notice
+	// a bumped camera).
 	int checkObservations = 30;
 	double minCheckFit = 0.5;
 	// The calibrated method's resize (its minPersonHeight is the calibrated settings'). The
@@ -73,9 +76,11 @@ public:
 
 	// The method of the last frame (Generic while collecting).
 	DetectionMethod lastMethod() const { return lastMethod_; }
-	// 0 while no estimate is in use, else the number of the estimate in use (1, 2, ...:
-	// each applied estimate, after a camera change too, gets the next number).
-	int cameraEstimate() const { return calibrated_ ? estimate_ : 0; }
+	// The camera estimate the last frame's method used: 0 for the generic method, else its
+	// number (1, 2, ...: each applied estimate, after a camera change too, gets the next
+	// number). The frame on which an estimate arrives ran the generic method: 0; the next
+	// frame is the first with the new number.
+	int cameraEstimate() const { return lastEstimate_; }
 	// The camera in use (valid() false while collecting) and the resize it was given.
 	const CameraModel &camera() const { return camera_; }
 	double calibratedResize() const { return calibratedResize_; }
@@ -106,6 +111,7 @@ private:
 	int estimate_ = 0, changes_ = 0;
 	uint64_t frameIndex_ = 0;
 	DetectionMethod lastMethod_ = DetectionMethod::Generic;
+	int lastEstimate_ = 0; // the estimate lastMethod_ used (0: generic)
 };
 
 } // namespace calped

@@ -169,10 +169,13 @@ Status SelfCalibratingDetector::detect(const ImageView &image, Detections &out)
 	}
 	if (calibrated_) {
 		lastMethod_ = DetectionMethod::Calibrated;
+		lastEstimate_ = estimate_;
 		const Status st = calibrated_->detect(image, out);
 		if (!st.ok())
 			return st;
-		if (++framesCalibrated_ % config_.checkEvery == 0) {
+		// The check so far failing: look again on this frame rather than checkEvery later.
+		const bool failing = checkSeen_ > 0 && checkFit_ < config_.minCheckFit * checkSeen_;
+		if (++framesCalibrated_ % config_.checkEvery == 0 || failing) {
 			Detections generic;
 			const Status gs = generic_->detect(image, generic);
 			if (!gs.ok())
@@ -182,12 +185,14 @@ Status SelfCalibratingDetector::detect(const ImageView &image, Detections &out)
 			if (!calibrated_) {
 				// Dropped: this frame's detections are the generic method's.
 				lastMethod_ = DetectionMethod::Generic;
+				lastEstimate_ = 0;
 				out = generic;
 			}
 		}
 		return Status::success();
 	}
 	lastMethod_ = DetectionMethod::Generic;
+	lastEstimate_ = 0;
 	const Status st = generic_->detect(image, out);
 	if (!st.ok())
 		return st;
