@@ -15,16 +15,16 @@ namespace {
 
 constexpr int kWidth = 320, kHeight = 240, kFrames = 3, kThreads = 4;
 
-struct Run {
+struct DetectorRun {
 	std::vector<Detection> detections;
 	uint64_t windows = 0, candidates = 0;
 	bool ok = false;
 };
 
 // One detector over its thread's frames (seeded by `thread`), everything it found.
-Run detectFrames(const Model &model, int thread)
+DetectorRun detectFrames(const Model &model, int thread)
 {
-	Run run;
+	DetectorRun run;
 	DetectorConfig cfg;
 	cfg.maxWidth = kWidth;
 	cfg.maxHeight = kHeight;
@@ -45,7 +45,7 @@ Run detectFrames(const Model &model, int thread)
 	return run;
 }
 
-void expectSame(const Run &a, const Run &b, int thread)
+void expectSame(const DetectorRun &a, const DetectorRun &b, int thread)
 {
 	ASSERT_TRUE(a.ok && b.ok) << "thread " << thread;
 	EXPECT_EQ(a.windows, b.windows) << "thread " << thread;
@@ -63,7 +63,7 @@ void expectSame(const Run &a, const Run &b, int thread)
 TEST(Threads, SeparateDetectorsSharingOneModelMatchTheSerialRun)
 {
 	const Model model = test::randomModel(7);
-	std::vector<Run> serial(kThreads), parallel(kThreads);
+	std::vector<DetectorRun> serial(kThreads), parallel(kThreads);
 	for (int t = 0; t < kThreads; t++)
 		serial[t] = detectFrames(model, t);
 	std::vector<std::thread> threads;
