@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "capped_file.h"
 
+#include "excerpt.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -15,34 +17,36 @@ bool readFileBytes(const std::string &path, std::vector<uint8_t> &out, std::stri
 		   const std::string &what, size_t maxBytes)
 {
 	out.clear();
+	// Messages name the file escaped (a name may hold control bytes or invalid UTF-8).
+	auto named = [&path] { return excerpt(path, kExcerptPathBytes); };
 	// stat(), not std::filesystem: a path object would allocate on every frame. Only a
 	// regular file: a FIFO would block for ever, a device (/dev/zero) never ends.
 	struct stat st;
 	if (::stat(path.c_str(), &st) != 0) {
-		error = "cannot read " + what + path + ": " + std::strerror(errno);
+		error = "cannot read " + what + named() + ": " + std::strerror(errno);
 		return false;
 	}
 	if (!S_ISREG(st.st_mode)) {
-		error = "cannot read " + what + path + ": " +
+		error = "cannot read " + what + named() + ": " +
 			(S_ISDIR(st.st_mode) ? "is a directory" : S_ISFIFO(st.st_mode) ? "is a FIFO, not a regular file"
 				: "is a device or socket, not a regular file");
 		return false;
 	}
 	if (static_cast<unsigned long long>(st.st_size) > maxBytes) {
-		error = "cannot read " + what + path + ": " + std::to_string(st.st_size) + " bytes, over the " +
+		error = "cannot read " + what + named() + ": " + std::to_string(st.st_size) + " bytes, over the " +
 			std::to_string(maxBytes) + "-byte limit for this kind of file (docs/errors.md)";
 		return false;
 	}
 	// O_NONBLOCK: if the path was swapped for a FIFO since stat(), open() must not wait.
 	const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
 	if (fd < 0) {
-		error = "cannot read " + what + path + ": " + std::strerror(errno);
+		error = "cannot read " + what + named() + ": " + std::strerror(errno);
 		return false;
 	}
 	struct stat opened;
 	if (::fstat(fd, &opened) != 0 || !S_ISREG(opened.st_mode)) {
 		::close(fd);
-		error = "cannot read " + what + path + ": not a regular file";
+		error = "cannot read " + what + named() + ": not a regular file";
 		return false;
 	}
 	// Up to the cap and one byte more: a file that grew past it is refused, not cut.
@@ -61,7 +65,7 @@ bool readFileBytes(const std::string &path, std::vector<uint8_t> &out, std::stri
 			const int e = errno;
 			::close(fd);
 			out.clear();
-			error = "cannot read " + what + path + ": " + std::strerror(e);
+			error = "cannot read " + what + named() + ": " + std::strerror(e);
 			return false;
 		}
 		if (n == 0)
@@ -71,7 +75,7 @@ bool readFileBytes(const std::string &path, std::vector<uint8_t> &out, std::stri
 	::close(fd);
 	if (got > maxBytes) {
 		out.clear();
-		error = "cannot read " + what + path + ": over the " + std::to_string(maxBytes) +
+		error = "cannot read " + what + named() + ": over the " + std::to_string(maxBytes) +
 			"-byte limit for this kind of file (docs/errors.md)";
 		return false;
 	}
