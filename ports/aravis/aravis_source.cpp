@@ -105,8 +105,29 @@ Status AravisSource::connect()
 		return st;
 	}
 	Status st;
+	// What the camera had before this run changed it: a refused or unusable setting is
+	// put back, so it never sticks into the next run (a camera keeps what it was told).
+	GError *readError = nullptr;
+	const ArvPixelFormat originalFormat = arv_camera_get_pixel_format(camera_, &readError);
+	gint originalRegion[4] = { 0, 0, 0, 0 };
+	if (!readError)
+		arv_camera_get_region(camera_, &originalRegion[0], &originalRegion[1], &originalRegion[2],
+				      &originalRegion[3], &readError);
+	const bool canRestore = readError == nullptr;
+	g_clear_error(&readError);
+	auto restore = [&] {
+		if (!canRestore || !camera_)
+			return;
+		GError *e = nullptr;
+		arv_camera_set_pixel_format(camera_, originalFormat, &e);
+		g_clear_error(&e);
+		arv_camera_set_region(camera_, originalRegion[0], originalRegion[1], originalRegion[2],
+				      originalRegion[3], &e);
+		g_clear_error(&e);
+	};
 	auto fail = [&](ErrorCode code, const char *what) {
 		st = fromGError(code, error, what, who);
+		restore();
 		disconnect();
 		return st;
 	};
@@ -157,6 +178,7 @@ Status AravisSource::connect()
 				   "camera %s: pixel format %s (0x%08x) is not one calped reads without "
 				   "conversion; choose Mono8, RGB8, BGR8, YUV422_YUYV_Packed or Bayer*8",
 				   who.c_str(), formatName_.c_str(), static_cast<unsigned>(pfnc));
+		restore();
 		disconnect();
 		return st;
 	}

@@ -10,6 +10,8 @@ namespace {
 bool readSide(const char *text, size_t size, size_t &i, int &out)
 {
 	const size_t start = i;
+	if (i < size && text[i] == '0')
+		return false; // ffprobe writes no leading zero (and a side is >= 1)
 	long v = 0;
 	while (i < size && text[i] >= '0' && text[i] <= '9') {
 		v = v * 10 + (text[i] - '0');

@@ -12,7 +12,7 @@ namespace ports {
 constexpr int kMaxProbedSide = 16384;
 
 // True and the size when `text` (size bytes, not NUL-terminated) is exactly two decimal
-// numbers 1..kMaxProbedSide joined by 'x', then only white space (ffprobe's line end; a
+// numbers 1..kMaxProbedSide without leading zeros joined by 'x', then only white space (ffprobe's line end; a
 // second stream's line is refused, as is a sign, a leading space or trailing junk).
 bool parseProbedSize(const char *text, size_t size, int &width, int &height);
 

@@ -236,6 +236,12 @@ TEST(AravisSource, RefusedSettingsAreCameraErrors)
 	st = openCamera("127.0.0.1", "Mono16", AravisOptions(), src);
 	EXPECT_EQ(st.code(), ErrorCode::CameraError) << st.message();
 	EXPECT_NE(std::strstr(st.message(), "Mono16"), nullptr) << st.message();
+	// The refused setting did not stick: the next run with the camera's own format
+	// opens, and in the format the camera had before (issue 19).
+	st = openCamera("127.0.0.1", "", AravisOptions(), src);
+	ASSERT_TRUE(st.ok()) << st.message();
+	EXPECT_NE(src->pixelFormatName(), "Mono16");
+	src.reset();
 	AravisOptions bad;
 	bad.buffers = 1;
 	EXPECT_EQ(openCamera("127.0.0.1", "", bad, src).code(), ErrorCode::InvalidArgument);

@@ -291,7 +291,8 @@ TEST(FileSource, ProbedSizeIsTwoNumbersAndNothingElse)
 	EXPECT_TRUE(parse("16384x1"));
 	for (const char *bad : { "", "x", "768x", "x576", "768x576\n640x480\n", "0x576", "768x0",
 				 "-768x576", "+768x576", " 768x576", "768 x 576", "768x576junk",
-				 "16385x576", "99999999999999999999x576", "768X576" })
+				 "16385x576", "99999999999999999999x576", "768X576", "0768x576",
+				 "011x02980\r\n" /* found by fuzzing: printed back as 11x2980 */ })
 		EXPECT_FALSE(parse(bad)) << bad;
 	EXPECT_FALSE(parse(std::string("768x576\0", 8))); // a NUL is not white space
 }
