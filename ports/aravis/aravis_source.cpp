@@ -352,7 +352,7 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 			stream_, static_cast<guint64>(std::min<int64_t>(left.count(), kPollMs * 1000)));
 		if (!b)
 			continue;
-		const uint64_t number = numbers_.next(arv_buffer_get_frame_id(b));
+		const uint64_t number = numbers_.next(arv_buffer_get_frame_id(b), int64_t(arv_buffer_get_system_timestamp(b)));
 		if (arv_buffer_get_status(b) != ARV_BUFFER_STATUS_SUCCESS) {
 			const ArvBufferStatus s = arv_buffer_get_status(b);
 			stats_.incomplete++;
@@ -368,7 +368,7 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 		// Aravis's output queue is in frame order, so the last one out is the newest
 		// (and has the highest number).
 		while ((b = arv_stream_try_pop_buffer(stream_)) != nullptr) {
-			const uint64_t later = numbers_.next(arv_buffer_get_frame_id(b));
+			const uint64_t later = numbers_.next(arv_buffer_get_frame_id(b), int64_t(arv_buffer_get_system_timestamp(b)));
 			if (arv_buffer_get_status(b) == ARV_BUFFER_STATUS_SUCCESS) {
 				arv_stream_push_buffer(stream_, newest);
 				stats_.dropped++;
@@ -545,6 +545,7 @@ AravisStats AravisSource::transportStats() const
 {
 	AravisStats t = transport_;
 	t.unseenFrames = numbers_.unseen();
+	t.lostAcrossReconnects = numbers_.lostAcrossRestarts();
 	t.underruns = closedUnderruns_;
 	t.missingFrames = closedMissingFrames_;
 	t.resentPackets = closedResent_;
