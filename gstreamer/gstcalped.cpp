@@ -279,13 +279,13 @@ gboolean calpedSetInfo(GstVideoFilter *filter, GstCaps *, GstVideoInfo *in, GstC
 	session->yuv = gst::yuvEncodingFor(in->colorimetry);
 	const int width = GST_VIDEO_INFO_WIDTH(in), height = GST_VIDEO_INFO_HEIGHT(in);
 	const Settings s = snapshot(self);
-	if (session->hasCamera && session->camera.imageWidth() > 0 &&
-	    (session->camera.imageWidth() != width || session->camera.imageHeight() != height)) {
-		GST_ELEMENT_ERROR(self, STREAM, FORMAT,
-				  ("calibration %s is for %dx%d frames, the stream is %dx%d", s.calibration.c_str(),
-				   session->camera.imageWidth(), session->camera.imageHeight(), width, height),
-				  ("scale the video to the calibration's size, or calibrate at this size"));
-		return FALSE;
+	if (session->hasCamera) {
+		const Status fits = session->camera.checkFrameSize(width, height);
+		if (!fits.ok()) {
+			GST_ELEMENT_ERROR(self, STREAM, FORMAT, ("calibration %s: %s", s.calibration.c_str(), fits.message()),
+					  ("scale the video to the calibration's size, or calibrate at this size"));
+			return FALSE;
+		}
 	}
 	const DetectorConfig config = configFor(s, *session, width, height);
 	Status st;

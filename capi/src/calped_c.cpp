@@ -11,6 +11,8 @@
 #include <calped/status.h>
 #include <calped/version.h>
 
+#include "capped_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -20,6 +22,7 @@
 #include <exception>
 #include <memory>
 #include <new>
+#include <string>
 #include <vector>
 
 struct calped_model {
@@ -39,6 +42,7 @@ namespace {
 
 using calped::ErrorCode;
 using calped::Status;
+namespace files = calped::files;
 
 // The C enums mirror the C++ ones value for value: checked here, once.
 static_assert(int(CALPED_ERR_END_OF_STREAM) == int(ErrorCode::EndOfStream), "calped_status mirrors ErrorCode");
@@ -97,28 +101,22 @@ template <typename Body> calped_status guarded(calped_error *err, Body &&body) n
 	return CALPED_ERR_INTERNAL;
 }
 
-// The whole file, or IoError naming it.
-Status readFile(const char *path, std::vector<char> &out)
+// The whole file, or IoError naming it: only a regular file, at most maxBytes (the
+// programs' caps, fileio/capped_file.h), so a FIFO or /dev/zero cannot block or exhaust.
+Status readFile(const char *path, const char *what, size_t maxBytes, std::vector<char> &out)
 {
-	std::FILE *f = std::fopen(path, "rb");
-	if (!f)
-		return Status::error(ErrorCode::IoError, "cannot open %s: %s", path, std::strerror(errno));
-	out.clear();
-	char buf[65536];
-	size_t n;
-	while ((n = std::fread(buf, 1, sizeof(buf), f)) > 0)
-		out.insert(out.end(), buf, buf + n);
-	const bool failed = std::ferror(f) != 0;
-	const int e = errno;
-	std::fclose(f);
-	if (failed)
-		return Status::error(ErrorCode::IoError, "cannot read %s: %s", path, std::strerror(e));
+	std::vector<uint8_t> bytes;
+	std::string error;
+	if (!files::readFileBytes(path, bytes, error, what, maxBytes))
+		return Status::error(ErrorCode::IoError, "%s", error.c_str());
+	out.assign(bytes.begin(), bytes.end());
 	return Status::success();
 }
 
 // The *_load_file functions: the arguments checked, the file read, then `load(bytes)`.
 template <typename Handle, typename Load>
-calped_status loadFile(const char *function, const char *path, Handle **out, calped_error *err, Load &&load)
+calped_status loadFile(const char *function, const char *what, size_t maxBytes, const char *path, Handle **out,
+		       calped_error *err, Load &&load)
 {
 	return guarded(err, [&] {
 		if (out)
@@ -126,7 +124,7 @@ calped_status loadFile(const char *function, const char *path, Handle **out, cal
 		if (!path || !out)
 			return fail(err, Status::error(ErrorCode::InvalidArgument, "%s: path and out must not be NULL", function));
 		std::vector<char> bytes;
-		const Status st = readFile(path, bytes);
+		const Status st = readFile(path, what, maxBytes, bytes);
 		return st.ok() ? load(bytes) : fail(err, st);
 	});
 }
@@ -265,7 +263,7 @@ const char *calped_version(void)
 
 calped_status calped_model_load_file(const char *path, calped_model **out, calped_error *err)
 {
-	return loadFile("calped_model_load_file", path, out, err, [&](const std::vector<char> &bytes) {
+	return loadFile("calped_model_load_file", "model ", files::kMaxModelFileBytes, path, out, err, [&](const std::vector<char> &bytes) {
 		return loadModel(bytes.data(), bytes.size(), out, err);
 	});
 }
@@ -292,7 +290,7 @@ void calped_model_free(calped_model *model)
 
 calped_status calped_camera_load_file(const char *path, calped_camera **out, calped_error *err)
 {
-	return loadFile("calped_camera_load_file", path, out, err, [&](const std::vector<char> &bytes) {
+	return loadFile("calped_camera_load_file", "calibration ", files::kMaxCalibrationFileBytes, path, out, err, [&](const std::vector<char> &bytes) {
 		return loadCamera(bytes.data(), bytes.size(), path, out, err);
 	});
 }

@@ -39,9 +39,9 @@ public:
 	void appendStats(char *line, size_t size) const override
 	{
 		const calped::ports::AravisStats t = source_.transportStats();
-		std::snprintf(line, size, ", never seen %" PRIu64 ", resent packets %" PRIu64
-				  ", missing packets %" PRIu64,
-			      t.unseenFrames, t.resentPackets, t.missingPackets);
+		std::snprintf(line, size, ", never seen %" PRIu64 " (%" PRIu64 " estimated lost while reconnecting)"
+				  ", resent packets %" PRIu64 ", missing packets %" PRIu64,
+			      t.unseenFrames, t.lostAcrossReconnects, t.resentPackets, t.missingPackets);
 	}
 
 private:

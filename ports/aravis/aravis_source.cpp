@@ -105,8 +105,29 @@ Status AravisSource::connect()
 		return st;
 	}
 	Status st;
+	// What the camera had before this run changed it: a refused or unusable setting is
+	// put back, so it never sticks into the next run (a camera keeps what it was told).
+	GError *readError = nullptr;
+	const ArvPixelFormat originalFormat = arv_camera_get_pixel_format(camera_, &readError);
+	gint originalRegion[4] = { 0, 0, 0, 0 };
+	if (!readError)
+		arv_camera_get_region(camera_, &originalRegion[0], &originalRegion[1], &originalRegion[2],
+				      &originalRegion[3], &readError);
+	const bool canRestore = readError == nullptr;
+	g_clear_error(&readError);
+	auto restore = [&] {
+		if (!canRestore || !camera_)
+			return;
+		GError *e = nullptr;
+		arv_camera_set_pixel_format(camera_, originalFormat, &e);
+		g_clear_error(&e);
+		arv_camera_set_region(camera_, originalRegion[0], originalRegion[1], originalRegion[2],
+				      originalRegion[3], &e);
+		g_clear_error(&e);
+	};
 	auto fail = [&](ErrorCode code, const char *what) {
 		st = fromGError(code, error, what, who);
+		restore();
 		disconnect();
 		return st;
 	};
@@ -157,6 +178,7 @@ Status AravisSource::connect()
 				   "camera %s: pixel format %s (0x%08x) is not one calped reads without "
 				   "conversion; choose Mono8, RGB8, BGR8, YUV422_YUYV_Packed or Bayer*8",
 				   who.c_str(), formatName_.c_str(), static_cast<unsigned>(pfnc));
+		restore();
 		disconnect();
 		return st;
 	}
@@ -330,7 +352,7 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 			stream_, static_cast<guint64>(std::min<int64_t>(left.count(), kPollMs * 1000)));
 		if (!b)
 			continue;
-		const uint64_t number = numbers_.next(arv_buffer_get_frame_id(b));
+		const uint64_t number = numbers_.next(arv_buffer_get_frame_id(b), int64_t(arv_buffer_get_system_timestamp(b)));
 		if (arv_buffer_get_status(b) != ARV_BUFFER_STATUS_SUCCESS) {
 			const ArvBufferStatus s = arv_buffer_get_status(b);
 			stats_.incomplete++;
@@ -346,7 +368,7 @@ Status AravisSource::next(Frame &frame, int timeoutMs)
 		// Aravis's output queue is in frame order, so the last one out is the newest
 		// (and has the highest number).
 		while ((b = arv_stream_try_pop_buffer(stream_)) != nullptr) {
-			const uint64_t later = numbers_.next(arv_buffer_get_frame_id(b));
+			const uint64_t later = numbers_.next(arv_buffer_get_frame_id(b), int64_t(arv_buffer_get_system_timestamp(b)));
 			if (arv_buffer_get_status(b) == ARV_BUFFER_STATUS_SUCCESS) {
 				arv_stream_push_buffer(stream_, newest);
 				stats_.dropped++;
@@ -523,6 +545,7 @@ AravisStats AravisSource::transportStats() const
 {
 	AravisStats t = transport_;
 	t.unseenFrames = numbers_.unseen();
+	t.lostAcrossReconnects = numbers_.lostAcrossRestarts();
 	t.underruns = closedUnderruns_;
 	t.missingFrames = closedMissingFrames_;
 	t.resentPackets = closedResent_;

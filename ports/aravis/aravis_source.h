@@ -56,6 +56,7 @@ struct AravisStats {
 	uint64_t incompleteTimeout = 0;        // ... as TIMEOUT (frame retention expired)
 	uint64_t incompleteOther = 0;          // ... any other failed status
 	uint64_t unseenFrames = 0;             // block ids that never came out of Aravis (in dropped)
+	uint64_t lostAcrossReconnects = 0;     // of those, frames estimated lost while reconnecting (time away / frame interval)
 	uint64_t underruns = 0;                // Aravis's n_underruns since start() (packets without a buffer)
 	uint64_t missingFrames = 0;            // Aravis's n_missing_frames since start()
 	uint64_t resentPackets = 0;            // packets recovered by resend

@@ -25,7 +25,7 @@ int64_t distance(uint64_t last, uint64_t id)
 
 } // namespace
 
-uint64_t FrameNumbers::next(uint64_t blockId)
+uint64_t FrameNumbers::next(uint64_t blockId, int64_t timestampNs)
 {
 	if (!started_) {
 		// The first frame keeps the camera's id, so numbers equal block ids until a wrap.
@@ -33,19 +33,38 @@ uint64_t FrameNumbers::next(uint64_t blockId)
 		restarted_ = false;
 		lastId_ = blockId;
 		number_ = blockId;
+		lastTimestampNs_ = timestampNs;
 		return number_;
 	}
 	int64_t step = 1;
 	if (restarted_) {
-		restarted_ = false; // a new connection's first id says nothing about the gap
+		restarted_ = false;
+		// The ids start afresh: the frames the camera made while it was away are estimated
+		// from the time since the last frame and the frame interval seen before.
+		if (timestampNs > 0 && lastTimestampNs_ > 0 && intervalNs_ > 0 && timestampNs > lastTimestampNs_) {
+			const double frames = double(timestampNs - lastTimestampNs_) / intervalNs_;
+			const int64_t lost = static_cast<int64_t>(frames + 0.5) - 1;
+			if (lost > 0) {
+				lostAcrossRestarts_ += static_cast<uint64_t>(lost);
+				unseen_ += static_cast<uint64_t>(lost);
+				step += lost;
+			}
+		}
 	} else {
 		const int64_t d = distance(lastId_, blockId);
 		if (d > 1)
 			unseen_ += static_cast<uint64_t>(d - 1);
 		if (d > 0)
 			step = d;
+		// The interval per id step, smoothed (a quarter of each new measure).
+		if (d > 0 && timestampNs > 0 && lastTimestampNs_ > 0 && timestampNs > lastTimestampNs_) {
+			const double measured = double(timestampNs - lastTimestampNs_) / double(d);
+			intervalNs_ = intervalNs_ > 0 ? intervalNs_ + (measured - intervalNs_) / 4 : measured;
+		}
 	}
 	lastId_ = blockId;
+	if (timestampNs > 0)
+		lastTimestampNs_ = timestampNs;
 	number_ += static_cast<uint64_t>(step);
 	return number_;
 }

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "capped_file.h"
+
 namespace calped {
 namespace ports {
 
@@ -23,18 +25,13 @@ struct RgbImage {
 // more is refused before any pixel memory is allocated.
 constexpr long kMaxImagePixels = 8192L * 8192L;
 
-// Caps on the files read whole, by kind (docs/errors.md): a larger file is refused before
-// it is read. An image file: the largest 8192x8192 PPM and then some.
-constexpr size_t kMaxImageFileBytes = size_t(256) << 20;
-constexpr size_t kMaxModelFileBytes = size_t(64) << 20;       // the INRIA blob is 0.2 MiB
-constexpr size_t kMaxCalibrationFileBytes = size_t(4) << 20;  // calibrations are a few KiB
-constexpr size_t kMaxTableFileBytes = size_t(512) << 20;      // CSV, ground truth, correspondences
-
-// Reads a whole regular file into `out`, reusing its capacity; a FIFO, device, socket or
-// folder is refused (a FIFO would block, /dev/zero never ends), and so is a file over
-// maxBytes. `what` names the file's role in the error ("model ").
-bool readFileBytes(const std::string &path, std::vector<uint8_t> &out, std::string &error,
-		   const std::string &what, size_t maxBytes);
+// The caps on files read whole and the capped reader are in fileio/capped_file.h (shared
+// with the C API); the programs name them here.
+using files::kMaxCalibrationFileBytes;
+using files::kMaxImageFileBytes;
+using files::kMaxModelFileBytes;
+using files::kMaxTableFileBytes;
+using files::readFileBytes;
 
 // Decodes PNG, JPEG, binary PPM or PGM (recognised by their first bytes) to RGB8: grey is
 // expanded to three channels, alpha dropped. Other formats stb knows are refused.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "video_pipe.h"
 
+#include "probe_output.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -11,6 +13,7 @@
 #include <poll.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 extern char **environ;
@@ -25,6 +28,16 @@ struct Child {
 	int out = -1;
 	int err = -1;
 };
+
+// ffprobe reads a header: a minute is a hung child (a FIFO named like a video), not a slow one.
+constexpr int kProbeTimeoutMs = 60000;
+
+long long monotonicMs()
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return static_cast<long long>(t.tv_sec) * 1000 + t.tv_nsec / 1000000;
+}
 
 // Runs argv[0] from PATH with stdout and stderr on pipes. errno-style code on failure.
 int spawnWithPipes(const char *const argv[], Child &child)
@@ -60,24 +73,69 @@ int spawnWithPipes(const char *const argv[], Child &child)
 	return 0;
 }
 
-// Reads up to size-1 bytes of what the child wrote on stderr, as one line.
-void readMessage(int fd, char *text, size_t size)
+// What a child wrote on one pipe: its first bytes (the rest is read and dropped).
+struct Captured {
+	char text[256] = {};
+	size_t size = 0;
+	bool more = false; // it wrote more than fits
+};
+
+void keep(Captured &c, const char *bytes, size_t n)
 {
-	size_t n = 0;
-	while (n + 1 < size) {
-		const ssize_t r = ::read(fd, text + n, size - 1 - n);
-		if (r < 0 && errno == EINTR)
-			continue;
-		if (r <= 0)
-			break;
-		n += static_cast<size_t>(r);
+	const size_t room = sizeof(c.text) - 1 - c.size;
+	if (n > room)
+		c.more = true;
+	n = std::min(n, room);
+	std::memcpy(c.text + c.size, bytes, n);
+	c.size += n;
+	c.text[c.size] = '\0';
+}
+
+// Reads the child's stdout and stderr together until both end, so that a child writing
+// much on one while we wait on the other never blocks on a full pipe. False when neither
+// ended within timeoutMs (the child is then killed).
+bool drainBoth(Child &child, Captured &out, Captured &err, int timeoutMs)
+{
+	int fds[2] = { child.out, child.err };
+	Captured *into[2] = { &out, &err };
+	const long long deadline = monotonicMs() + timeoutMs;
+	while (fds[0] >= 0 || fds[1] >= 0) {
+		struct pollfd p[2] = { { fds[0], POLLIN, 0 }, { fds[1], POLLIN, 0 } };
+		const long long left = deadline - monotonicMs();
+		if (left <= 0) {
+			::kill(child.pid, SIGKILL);
+			return false;
+		}
+		const int ready = poll(p, 2, static_cast<int>(std::min(left, 1000LL)));
+		if (ready < 0 && errno != EINTR)
+			return false;
+		for (int k = 0; k < 2; k++) {
+			if (fds[k] < 0 || !(p[k].revents & (POLLIN | POLLHUP | POLLERR)))
+				continue;
+			char chunk[4096];
+			const ssize_t r = ::read(fds[k], chunk, sizeof(chunk));
+			if (r < 0 && (errno == EINTR || errno == EAGAIN))
+				continue;
+			if (r <= 0)
+				fds[k] = -1; // its end (or an error): that pipe is done
+			else
+				keep(*into[k], chunk, static_cast<size_t>(r));
+		}
 	}
-	while (n > 0 && std::isspace(static_cast<unsigned char>(text[n - 1])))
+	return true;
+}
+
+// The first line of what the child wrote on stderr, trailing space trimmed.
+const char *oneLine(Captured &c)
+{
+	size_t n = c.size;
+	while (n > 0 && std::isspace(static_cast<unsigned char>(c.text[n - 1])))
 		n--;
-	text[n] = '\0';
+	c.text[n] = '\0';
 	for (size_t i = 0; i < n; i++)
-		if (text[i] == '\n' || text[i] == '\r')
-			text[i] = ' ';
+		if (static_cast<unsigned char>(c.text[i]) < 0x20 || c.text[i] == 0x7f)
+			c.text[i] = ' ';
+	return c.text;
 }
 
 int reap(pid_t pid)
@@ -121,23 +179,24 @@ Status probeVideo(const std::string &path, int &width, int &height)
 	if (rc != 0)
 		return Status::error(ErrorCode::IoError, "cannot run ffprobe for %s: %s%s",
 				     path.c_str(), std::strerror(rc), missingToolHint(rc));
-	char out[128], err[200];
-	readMessage(child.out, out, sizeof(out));
-	readMessage(child.err, err, sizeof(err));
+	Captured out, err;
+	const bool ended = drainBoth(child, out, err, kProbeTimeoutMs);
 	::close(child.out);
 	::close(child.err);
 	const int status = reap(child.pid);
+	if (!ended)
+		return Status::error(ErrorCode::IoError, "ffprobe did not finish on %s within %d s",
+				     path.c_str(), kProbeTimeoutMs / 1000);
 	// Where posix_spawnp cannot report a failed exec (qemu-user runs the child as a plain
 	// fork), the child exits 127 without a word: the program is not there.
-	if (WIFEXITED(status) && WEXITSTATUS(status) == 127 && !out[0] && !err[0])
+	if (WIFEXITED(status) && WEXITSTATUS(status) == 127 && out.size == 0 && err.size == 0)
 		return Status::error(ErrorCode::IoError, "cannot run ffprobe for %s: %s%s",
 				     path.c_str(), std::strerror(ENOENT), missingToolHint(ENOENT));
 	int w = 0, h = 0;
-	char tail = 0;
-	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
-	    std::sscanf(out, "%dx%d%c", &w, &h, &tail) != 2 || w <= 0 || h <= 0)
+	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || out.more ||
+	    !parseProbedSize(out.text, out.size, w, h))
 		return Status::error(ErrorCode::IoError, "cannot decode %s as video: %s", path.c_str(),
-				     err[0] ? err : "no video stream");
+				     err.size ? oneLine(err) : "no video stream of a size in 1..16384");
 	width = w;
 	height = h;
 	return Status::success();

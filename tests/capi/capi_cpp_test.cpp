@@ -11,6 +11,9 @@
 #include "test_data.h"
 
 #include <cmath>
+#include <cstdio>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -125,6 +128,41 @@ void expectSameAsCpp(const Model &model, const calped_model *cmodel, const Camer
 	EXPECT_EQ(stats.computed_levels, cpp->lastStats().computedLevels) << what;
 	EXPECT_EQ(int(calped_detector_method(det)), int(DetectionMethod::Calibrated));
 	calped_detector_free(det);
+}
+
+// The *_load_file functions read like the programs: regular files only, capped by kind
+// (docs/errors.md), so a FIFO cannot block and /dev/zero cannot exhaust memory.
+TEST(CApi, FileReadsAreCappedRegularFilesLikeThePrograms)
+{
+	const std::string dir = ::testing::TempDir() + "capi-files-" + std::to_string(::getpid());
+	ASSERT_EQ(::mkdir(dir.c_str(), 0700), 0);
+	const std::string fifo = dir + "/model.cpm";
+	ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+	// A calibration one byte over the 4 MiB cap (sparse: nothing is written).
+	const std::string big = dir + "/big.xml";
+	std::FILE *f = std::fopen(big.c_str(), "w");
+	ASSERT_NE(f, nullptr);
+	ASSERT_EQ(::ftruncate(::fileno(f), (off_t(4) << 20) + 1), 0);
+	std::fclose(f);
+
+	calped_error err;
+	calped_model *model = nullptr;
+	EXPECT_EQ(calped_model_load_file(fifo.c_str(), &model, &err), CALPED_ERR_IO);
+	EXPECT_NE(std::strstr(err.message, "is a FIFO, not a regular file"), nullptr) << err.message;
+	EXPECT_EQ(calped_model_load_file("/dev/zero", &model, &err), CALPED_ERR_IO);
+	EXPECT_NE(std::strstr(err.message, "/dev/zero: is a device or socket"), nullptr) << err.message;
+	EXPECT_EQ(calped_model_load_file(dir.c_str(), &model, &err), CALPED_ERR_IO);
+	EXPECT_NE(std::strstr(err.message, "is a directory"), nullptr) << err.message;
+	EXPECT_EQ(model, nullptr);
+	calped_camera *camera = nullptr;
+	EXPECT_EQ(calped_camera_load_file(big.c_str(), &camera, &err), CALPED_ERR_IO);
+	EXPECT_NE(std::strstr(err.message, "calibration "), nullptr) << err.message;
+	EXPECT_NE(std::strstr(err.message, "4194305 bytes, over the 4194304-byte limit"), nullptr) << err.message;
+	EXPECT_EQ(camera, nullptr);
+
+	std::remove(fifo.c_str());
+	std::remove(big.c_str());
+	::rmdir(dir.c_str());
 }
 
 TEST(CApi, PetsFrameInEveryFormatIsTheCppDetection)

@@ -59,14 +59,18 @@ CameraModel groundCamera(double height, double downDeg)
 
 TEST(CalibratedDetector, ACameraThatSeesNoGroundIsRefused)
 {
-	// Looking up at the sky (the principal row far below the image): no window anywhere
-	// holds a standing person, which is a wrong calibration, not an empty scene.
+	// Looking up at the sky (tilted 60 degrees up, 2 m high: the horizon is 1386 rows below
+	// the principal point, under the image): no window anywhere holds a standing person,
+	// which is a wrong calibration, not an empty scene. The principal point is the frame's
+	// centre (one outside the frame is refused earlier, as a calibration for other frames).
 	Eigen::Matrix3d K;
-	K << 800, 0, 320, 0, 800, 900, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	K << 800, 0, 320, 0, 800, 240, 0, 0, 1;
+	const double up = 60.0 * M_PI / 180.0;
+	Eigen::Matrix3d R; // rows: the camera's x, y (image down) and viewing axes in the world
+	R << 1, 0, 0, 0, std::sin(up), -std::cos(up), 0, std::cos(up), std::sin(up);
+	const Eigen::Vector3d t(0, 2.0 * std::cos(up), -2.0 * std::sin(up)); // centre (0, 0, 2)
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, t, LengthUnit::Metre, camera).ok());
 	DetectorConfig cfg;
 	cfg.maxWidth = 640;
 	cfg.maxHeight = 480;

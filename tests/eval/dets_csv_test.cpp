@@ -77,6 +77,31 @@ TEST(DetectionsCsv, MalformedFilesNameFileAndLine)
 	EXPECT_EQ(error.rfind(row + ":3: expected 6 comma-separated fields", 0), 0u) << error;
 }
 
+// A 1 MiB field of control characters and invalid UTF-8: the message quotes a short,
+// escaped excerpt (lib/src/text/excerpt.h), one printable line.
+TEST(DetectionsCsv, HostileFieldsAreQuotedShortAndEscaped)
+{
+	std::string field;
+	while (field.size() < (1u << 20))
+		field += "7\x01\x1b[2J\xff\xfe\r";
+	const std::string path = tempPath("hostile.csv");
+	std::FILE *f = std::fopen(path.c_str(), "wb");
+	ASSERT_NE(f, nullptr);
+	const std::string text = "frame,x,y,w,h,score\n1,2,3,4,5,6\n1," + field + ",3,4,5,6\n";
+	std::fwrite(text.data(), 1, text.size(), f);
+	std::fclose(f);
+	SequenceDetections d;
+	std::string error;
+	EXPECT_FALSE(readDetectionsCsv(path, 0, d, error));
+	std::remove(path.c_str());
+	EXPECT_LT(error.size(), path.size() + 160) << error.substr(0, 300);
+	for (unsigned char c : error)
+		ASSERT_TRUE(c >= 0x20 && c < 0x7f) << "byte " << int(c) << " in " << error.substr(0, 300);
+	// Each control byte and each invalid byte is one '?' (written \x3f: no trigraphs here).
+	EXPECT_NE(error.find(":3: x \"7\x3f\x3f[2J\x3f\x3f\x3f" "7"), std::string::npos) << error;
+	EXPECT_NE(error.find("...\" is not a finite number"), std::string::npos) << error;
+}
+
 // calped-detect's CSV (three world columns, empty without a calibration) scores as it is.
 TEST(DetectionsCsv, ReadsCalpedDetectsCsv)
 {

@@ -9,12 +9,23 @@
 namespace calped::fuzz {
 
 // An error message for people and logs: one line, no control characters (a field quoted
-// from the input must not carry a newline or a terminal escape into it), not empty.
+// from the input must not carry a newline or a terminal escape into it), well-formed UTF-8
+// (no raw byte of the input that is not), not empty.
+// Its own UTF-8 check, not the excerpt code's: the rule is tested, not the implementation.
 inline bool printableLine(const char *text)
 {
-	for (const char *p = text; *p; p++)
-		if (static_cast<unsigned char>(*p) < 0x20 || *p == 0x7f)
+	const auto *p = reinterpret_cast<const unsigned char *>(text);
+	while (*p) {
+		if (*p < 0x20 || *p == 0x7f)
 			return false;
+		int more = *p < 0x80 ? 0 : (*p & 0xe0) == 0xc0 && *p >= 0xc2 ? 1 : (*p & 0xf0) == 0xe0 ? 2
+			 : (*p & 0xf8) == 0xf0 && *p <= 0xf4 ? 3 : -1;
+		if (more < 0)
+			return false;
+		for (p++; more > 0; more--, p++)
+			if ((*p & 0xc0) != 0x80)
+				return false;
+	}
 	return *text != '\0';
 }
 

@@ -315,6 +315,29 @@ TEST_F(ConvertTest, TruncatedMatFileFailsCleanly)
 	}
 }
 
+// A changed byte inside the compressed variable, or a cut at its end: matio read what it
+// needed and the model converted "successfully" into another one. Now zlib's checksum and
+// the element lengths are checked first (tools/convert/mat_integrity.h).
+TEST_F(ConvertTest, ChangedOrTruncatedMatIsRefusedNotConverted)
+{
+	const std::string whole = readText(models_ / "AcfInriaDetector.mat");
+	ASSERT_GT(whole.size(), 60000u);
+	const fs::path bad = tmp_ / "bad.mat";
+	const fs::path blob = tmp_ / "bad.cpm";
+	for (size_t at : { size_t(5000), size_t(50000), whole.size() - 3 }) {
+		SCOPED_TRACE(at);
+		std::string changed = whole;
+		changed[at] = static_cast<char>(changed[at] ^ 0x10);
+		std::ofstream(bad, std::ios::binary).write(changed.data(), static_cast<std::streamsize>(changed.size()));
+		const RunResult r = run({ bad.string(), blob.string() });
+		expectOneLineFailure(r, "ParseError", blob);
+		EXPECT_NE(r.err.find("compressed variable"), std::string::npos) << r.err;
+	}
+	std::ofstream(bad, std::ios::binary).write(whole.data(), static_cast<std::streamsize>(whole.size() - 1));
+	const RunResult cut = run({ bad.string(), blob.string() });
+	expectOneLineFailure(cut, "truncated", blob);
+}
+
 TEST_F(ConvertTest, BadUsageIsOneLineAndExitsWithTwo)
 {
 	EXPECT_EQ(run({}).exitCode, 2);

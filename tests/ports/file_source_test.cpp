@@ -16,6 +16,8 @@
 
 #include "common/alloc_counter.h"
 #include "file_source.h"
+#include "probe_output.h"
+#include "video_pipe.h"
 
 using namespace calped;
 using namespace calped::ports;
@@ -251,6 +253,48 @@ TEST(FileSource, BadVideoAndMissingFfmpegAreClearErrors)
 	setenv("PATH", saved.c_str(), 1);
 	EXPECT_EQ(st.code(), ErrorCode::IoError);
 	EXPECT_NE(std::strstr(st.message(), "install ffmpeg"), nullptr) << st.message();
+}
+
+// An ffprobe that writes 1 MiB on stderr before its answer on stdout: read one pipe after
+// the other, the probe waited for stdout's end while ffprobe waited for room on stderr.
+TEST(FileSource, ProbeDrainsFfprobesStdoutAndStderrTogether)
+{
+	TempDir dir;
+	const std::string video = dir.path() + "/any.mp4";
+	std::FILE *f = std::fopen(video.c_str(), "w");
+	std::fputs("stand-in", f);
+	std::fclose(f);
+	const std::string fake = dir.path() + "/ffprobe";
+	f = std::fopen(fake.c_str(), "w");
+	std::fputs("#!/bin/sh\nhead -c 1048576 /dev/zero | tr '\\0' w >&2\necho 320x240\n", f);
+	std::fclose(f);
+	fs::permissions(fake, fs::perms::owner_all);
+
+	const char *oldPath = std::getenv("PATH");
+	const std::string saved = oldPath ? oldPath : "";
+	setenv("PATH", (dir.path() + ":" + saved).c_str(), 1);
+	int w = 0, h = 0;
+	const Status st = probeVideo(video, w, h);
+	setenv("PATH", saved.c_str(), 1);
+	ASSERT_TRUE(st.ok()) << st.message();
+	EXPECT_EQ(w, 320);
+	EXPECT_EQ(h, 240);
+}
+
+TEST(FileSource, ProbedSizeIsTwoNumbersAndNothingElse)
+{
+	int w = 0, h = 0;
+	auto parse = [&](const std::string &t) { return parseProbedSize(t.data(), t.size(), w, h); };
+	EXPECT_TRUE(parse("768x576\n"));
+	EXPECT_EQ(w, 768);
+	EXPECT_EQ(h, 576);
+	EXPECT_TRUE(parse("16384x1"));
+	for (const char *bad : { "", "x", "768x", "x576", "768x576\n640x480\n", "0x576", "768x0",
+				 "-768x576", "+768x576", " 768x576", "768 x 576", "768x576junk",
+				 "16385x576", "99999999999999999999x576", "768X576", "0768x576",
+				 "011x02980\r\n" /* found by fuzzing: printed back as 11x2980 */ })
+		EXPECT_FALSE(parse(bad)) << bad;
+	EXPECT_FALSE(parse(std::string("768x576\0", 8))); // a NUL is not white space
 }
 
 TEST(FileSource, AllocationCounterSeesAllocations)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "correspondences.h"
 
+#include "excerpt.h"
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -74,9 +76,13 @@ const char *const kColumns[5] = { "u", "v", "X", "Y", "Z" };
 
 } // namespace
 
-Status parseCorrespondences(const char *data, size_t size, const char *name,
+Status parseCorrespondences(const char *data, size_t size, const char *fileName,
 			    Correspondences &out)
 {
+	// The name and every quoted field escaped and cut (text/excerpt.h).
+	char name[kExcerptPathBytes + 4];
+	excerpt(fileName ? fileName : "", name, sizeof(name), kExcerptPathBytes);
+	char q[kExcerptBytes + 4];
 	try {
 		Correspondences result;
 		const std::string_view text(data, size);
@@ -101,8 +107,8 @@ Status parseCorrespondences(const char *data, size_t size, const char *name,
 				if (!ok)
 					return Status::error(ErrorCode::ParseError,
 							     "%s:%d: expected the header 'u,v,X,Y,Z', "
-							     "found '%.60s'",
-							     name, line, std::string(raw).c_str());
+							     "found '%s'",
+							     name, line, excerpt(raw, q, sizeof(q)));
 				header = true;
 				continue;
 			}
@@ -115,8 +121,8 @@ Status parseCorrespondences(const char *data, size_t size, const char *name,
 				bool finite = true;
 				if (!toNumber(f[i], v[i], finite))
 					return Status::error(ErrorCode::ParseError,
-							     "%s:%d: %s '%.40s' is not a %snumber", name,
-							     line, kColumns[i], std::string(f[i]).c_str(),
+							     "%s:%d: %s '%s' is not a %snumber", name,
+							     line, kColumns[i], excerpt(f[i], q, sizeof(q)),
 							     finite ? "" : "finite ");
 			}
 			PointCorrespondence p;

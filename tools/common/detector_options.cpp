@@ -295,6 +295,14 @@ bool createDetector(const Model &model, const DetectorOptions &options, int widt
 		    const CameraModel *camera, std::unique_ptr<Detector> &out, std::string &error,
 		    std::string *note)
 {
+	// First: a calibration for other frames would otherwise show up as "no person fits".
+	if (camera) {
+		const Status fits = camera->checkFrameSize(width, height);
+		if (!fits.ok()) {
+			error = "--calib " + options.calibPath + ": " + fits.message();
+			return false;
+		}
+	}
 	DetectorOptions resolved = options;
 	std::string resizeNote;
 	if (!resolveAutoResize(resolved, model, width, height, camera, resizeNote, error))

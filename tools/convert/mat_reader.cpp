@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "mat_reader.h"
 
+#include "capped_file.h"
+#include "mat_integrity.h"
+
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -88,6 +91,14 @@ Status MatFile::open(const std::string &path)
 				     std::strerror(readError));
 	if (empty)
 		return Status::error(ErrorCode::ParseError, "%s is empty, not a MAT file", path.c_str());
+	// What matio does not check: elements that tile the file, compressed ones complete
+	// with their checksum (a truncated or changed file is refused, never converted).
+	std::vector<uint8_t> bytes;
+	std::string error;
+	if (!files::readFileBytes(path, bytes, error, "", size_t(kMaxMatBytes)))
+		return Status::error(ErrorCode::IoError, "%s", error.c_str());
+	if (!checkMatIntegrity(bytes.data(), bytes.size(), error))
+		return Status::error(ErrorCode::ParseError, "%s: %s", path.c_str(), error.c_str());
 	lastMatioMessage().clear();
 	file_ = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
 	if (!file_)

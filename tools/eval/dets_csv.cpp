@@ -57,7 +57,22 @@ bool readDetectionsCsv(const std::string &path, long maxFrame, SequenceDetection
 		       std::string &error)
 {
 	out.clear();
-	const bool ok = forEachLine(path, error, [&](long lineNo, const std::string &line) {
+	std::string text;
+	if (!readTextFile(path, text, error)) {
+		if (error.rfind(path, 0) != 0)
+			error = "detections: " + error;
+		return false;
+	}
+	return parseDetectionsCsv(text, path, maxFrame, out, error);
+}
+
+bool parseDetectionsCsv(std::string_view text, const std::string &path, long maxFrame,
+			SequenceDetections &out, std::string &error)
+{
+	out.clear();
+	// Frames index a table: a number alone must not size it beyond any real sequence.
+	const long lastFrame = maxFrame > 0 ? maxFrame : kMaxDetectionsCsvFrame;
+	const bool ok = forEachLineIn(text, [&](long lineNo, const std::string &line) {
 		if (line.find_first_not_of(" \t\r") == std::string::npos)
 			return true;
 		const std::vector<std::string> f = splitCsvLine(line);
@@ -82,20 +97,21 @@ bool readDetectionsCsv(const std::string &path, long maxFrame, SequenceDetection
 		double v[6];
 		for (int i = 0; i < 6; i++) {
 			if (!parseDouble(f[i], v[i])) {
-				error = lineError(path, lineNo, std::string(kNames[i]) + " \"" + f[i] +
+				error = lineError(path, lineNo, std::string(kNames[i]) + " \"" + printable(f[i]) +
 									"\" is not a finite number");
 				return false;
 			}
 		}
 		long frame;
 		if (!parseLong(f[0], frame) || frame < 1) {
-			error = lineError(path, lineNo, "frame \"" + f[0] +
+			error = lineError(path, lineNo, "frame \"" + printable(f[0]) +
 								"\" is not a whole number >= 1 (frames are 1-based)");
 			return false;
 		}
-		if (maxFrame > 0 && frame > maxFrame) {
-			error = lineError(path, lineNo, "frame " + f[0] + " is beyond the " +
-								std::to_string(maxFrame) + " frames scored");
+		if (frame > lastFrame) {
+			error = lineError(path, lineNo, "frame " + printable(f[0]) + " is beyond the " +
+								std::to_string(lastFrame) +
+								(maxFrame > 0 ? " frames scored" : " frames a detections file may hold"));
 			return false;
 		}
 		if (static_cast<size_t>(frame) > out.size())

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "boxes.h"
 
@@ -20,9 +21,16 @@ double floatAsDecimal(float v);
 bool writeDetectionsCsv(const std::string &path, const SequenceDetections &detections,
 			std::string &error);
 
+// Largest frame number a detections CSV may hold when no maximum is given (a day at
+// 10 frames per second; the table of frames is sized by it).
+constexpr long kMaxDetectionsCsvFrame = 1000000;
+
 // Reads a CSV with or without the header line. Frames must be whole numbers in
-// 1..maxFrame (0 = no limit); `out` grows to the largest frame seen.
+// 1..maxFrame (0: 1..kMaxDetectionsCsvFrame); `out` grows to the largest frame seen.
 bool readDetectionsCsv(const std::string &path, long maxFrame, SequenceDetections &out,
 		       std::string &error);
+// The same over text in memory; `path` names it in messages (the fuzz target's entry).
+bool parseDetectionsCsv(std::string_view text, const std::string &path, long maxFrame,
+			SequenceDetections &out, std::string &error);
 
 } // namespace calped::eval_tool

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "text_fields.h"
 
+#include "excerpt.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -58,16 +60,12 @@ bool parseLong(const std::string &text, long &out)
 
 std::string printable(const std::string &text, size_t max)
 {
-	std::string out = text.size() > max ? text.substr(0, max) + "..." : text;
-	for (char &c : out)
-		if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-			c = '?';
-	return out;
+	return excerpt(text, max);
 }
 
 std::string lineError(const std::string &path, long line, const std::string &message)
 {
-	return path + ":" + std::to_string(line) + ": " + message;
+	return excerpt(path, kExcerptPathBytes) + ":" + std::to_string(line) + ": " + message;
 }
 
 } // namespace calped::eval_tool

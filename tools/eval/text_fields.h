@@ -17,9 +17,9 @@ std::vector<std::string> splitCsvLine(const std::string &line);
 bool parseDouble(const std::string &text, double &out); // finite values only
 bool parseLong(const std::string &text, long &out);     // decimal integer (also "12.0")
 
-// Input text for a message: at most `max` bytes ("..." when cut), control characters as
-// '?', so a message stays one printable line whatever the file holds.
-std::string printable(const std::string &text, size_t max = 40);
+// Input text for a message: the core's excerpt (lib/src/text/excerpt.h: at most `max` bytes,
+// "..." when cut, control bytes and bytes that are not UTF-8 as '?').
+std::string printable(const std::string &text, size_t max = 60);
 
 // "FILE:LINE: message", the form every reader uses for malformed input.
 std::string lineError(const std::string &path, long line, const std::string &message);

@@ -106,6 +106,13 @@ public:
 	// Image size when the calibration states it (Tsai), else 0.
 	int imageWidth() const { return width_; }
 	int imageHeight() const { return height_; }
+	// Whether this calibration can be for width x height frames: InvalidArgument naming
+	// both sizes when it states another image size (Tsai), or when its principal point (a
+	// calibration with intrinsics) lies outside such a frame, as a 1920x1080 camera's
+	// (959.5, 539.5) does on 768x576 frames: a calibration made for frames of another size
+	// finds nobody, silently. The one check of the detector (DetectorConfig::validate), the
+	// programs and the GStreamer element.
+	Status checkFrameSize(int width, int height) const;
 	// Unit of the source calibration (informative; the model itself is in metres).
 	LengthUnit sourceUnit() const { return sourceUnit_; }
 

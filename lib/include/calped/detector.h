@@ -1,8 +1,18 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // The ACF pedestrian detector: Dollár's sliding window over the fast feature pyramid
 // (generic method) or the thesis's calibrated method. All memory is allocated by
-// create(); detect() allocates nothing. One Detector is for one thread at a time;
-// several Detectors may share one Model and run on separate threads.
+// create(); detect() allocates nothing.
+//
+// Threads: a Detector is not thread-safe. Call one Detector's methods from one thread at
+// a time (it owns its buffers, its static background and its last result); two threads
+// calling detect() on the same Detector race on those buffers. Separate Detectors are
+// independent: each may run on its own thread, concurrently, and they may share one
+// Model (and one CameraModel): create() only reads them and copies what it needs, so
+// several threads may create detectors from one Model at once, and the Model may be freed
+// afterwards (it must not be modified while a create() reads it). Results are identical to running
+// the same detectors one after the other (tests/core/threads_test.cpp). Any worker
+// threads a Detector may use inside one detect() call are its own and internal: they
+// change nothing in this contract.
 #pragma once
 
 #include <cstdint>

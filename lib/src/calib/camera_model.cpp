@@ -172,6 +172,25 @@ Status CameraModel::fromOpenCv(const Eigen::Matrix3d &K, const Eigen::Matrix3d &
 	return st;
 }
 
+Status CameraModel::checkFrameSize(int width, int height) const
+{
+	if (width_ > 0 && (width_ != width || height_ != height))
+		return Status::error(ErrorCode::InvalidArgument,
+				     "the calibration is for %dx%d images, the frames are %dx%d", width_,
+				     height_, width, height);
+	// Cameras put the principal point near the image centre; one outside the frame means
+	// the calibration's pixels are not these frames' (another resolution or a crop).
+	if (hasPinhole_) {
+		const double cx = K_(0, 2), cy = K_(1, 2);
+		if (!(cx >= 0.0 && cx <= width && cy >= 0.0 && cy <= height))
+			return Status::error(ErrorCode::InvalidArgument,
+					     "the calibration's principal point (%.1f, %.1f) is outside the "
+					     "%dx%d frames: it is for frames of another size (about %.0fx%.0f?)",
+					     cx, cy, width, height, 2.0 * cx + 1.0, 2.0 * cy + 1.0);
+	}
+	return Status::success();
+}
+
 Status CameraModel::fromTsai(const TsaiCamera &c, LengthUnit unit, CameraModel &out)
 {
 	struct Field {

@@ -36,7 +36,7 @@ Status loadProjectionText(const char *data, size_t size, const char *name, Camer
 		const std::string_view text = calib::trim(calib::stripComment(line));
 		if (text.empty())
 			continue;
-		char q[48];
+		char q[kExcerptBytes + 4];
 		if (calib::startsWith(text, "unit")) {
 			const size_t colon = text.find(':');
 			if (colon == std::string_view::npos || calib::trim(text.substr(0, colon)) != "unit")

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "calib/text_util.h"
 
+#include "text/excerpt.h"
+
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -71,25 +73,7 @@ NumberResult parseNumber(std::string_view s, double &out)
 
 const char *quote(std::string_view s, char *buffer, size_t size)
 {
-	if (size == 0)
-		return "";
-	size_t n = s.size();
-	size_t copied = n;
-	if (n < size) {
-		if (n > 0) // an empty view may have no data pointer at all
-			std::memcpy(buffer, s.data(), n);
-		buffer[n] = '\0';
-	} else {
-		copied = size > 4 ? size - 4 : 0;
-		std::memcpy(buffer, s.data(), copied);
-		std::memcpy(buffer + copied, "...", size - copied > 3 ? 4 : size - copied);
-		buffer[size - 1] = '\0';
-	}
-	// Messages are one printable line: control bytes from the input (NUL too) become '?'.
-	for (size_t i = 0; i < copied; i++)
-		if (static_cast<unsigned char>(buffer[i]) < 0x20 || buffer[i] == 0x7f)
-			buffer[i] = '?';
-	return buffer;
+	return excerpt(s, buffer, size);
 }
 
 Status fileError(ErrorCode code, const char *name, int line, const char *fmt, ...)
@@ -99,15 +83,18 @@ Status fileError(ErrorCode code, const char *name, int line, const char *fmt, ..
 	va_start(args, fmt);
 	std::vsnprintf(text, sizeof(text), fmt, args);
 	va_end(args);
+	// The name is the caller's (a path, a user's label): escaped like any input.
+	char quotedName[kExcerptPathBytes + 4];
+	excerpt(name ? name : "", quotedName, sizeof(quotedName), kExcerptPathBytes);
 	if (line > 0)
-		return Status::error(code, "%s:%d: %s", name, line, text);
-	return Status::error(code, "%s: %s", name, text);
+		return Status::error(code, "%s:%d: %s", quotedName, line, text);
+	return Status::error(code, "%s: %s", quotedName, text);
 }
 
 Status numberError(NumberResult r, const char *name, int line, const char *field,
 		   std::string_view token)
 {
-	char q[48];
+	char q[kExcerptBytes + 4];
 	quote(token, q, sizeof(q));
 	if (r == NumberResult::NotFinite)
 		return fileError(ErrorCode::ParseError, name, line, "%s '%s' is not a finite number",
@@ -123,7 +110,9 @@ Status withFileName(const Status &st, const char *name)
 	const size_t skip = std::strlen(errorCodeName(st.code())) + 2; // "Code: "
 	if (std::strlen(text) >= skip)
 		text += skip;
-	return Status::error(st.code(), "%s: %s", name, text);
+	char quotedName[kExcerptPathBytes + 4];
+	excerpt(name ? name : "", quotedName, sizeof(quotedName), kExcerptPathBytes);
+	return Status::error(st.code(), "%s: %s", quotedName, text);
 }
 
 } // namespace calped::calib

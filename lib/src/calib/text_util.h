@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <string_view>
 
+#include "text/excerpt.h"
+
 #include <calped/calibration.h>
 #include <calped/status.h>
 
@@ -35,8 +37,8 @@ enum class NumberResult { Ok, NotANumber, NotFinite };
 // The whole of `s` must be one decimal number (optional sign, exponent); locale-independent.
 NumberResult parseNumber(std::string_view s, double &out);
 
-// Copies at most `size - 1` characters of `s` into `buffer` for messages, with "..." when cut
-// and '?' for control characters (a message stays one printable line).
+// `s` quoted for a message in `buffer` (text/excerpt.h: at most 60 bytes and what fits,
+// "..." when cut, '?' for control bytes and bytes that are not UTF-8).
 const char *quote(std::string_view s, char *buffer, size_t size);
 
 // "name:line: message" (line 0 leaves the line out).

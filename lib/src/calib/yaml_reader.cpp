@@ -52,7 +52,7 @@ Status YamlDocument::tokenize(std::string_view text)
 		pos = lineBegin = 3;
 
 	auto error = [&](const char *what, std::string_view arg = {}) {
-		char q[48];
+		char q[kExcerptBytes + 4];
 		return fileError(ErrorCode::ParseError, name_, line, what, quote(arg, q, sizeof(q)));
 	};
 
@@ -186,7 +186,7 @@ Status YamlDocument::split()
 		if (!(k.lineStart && k.type == YamlToken::Scalar))
 			return fileError(ErrorCode::ParseError, name_, k.line,
 					 "expected a top-level 'key:' at the start of the line");
-		char q[48];
+		char q[kExcerptBytes + 4];
 		if (i + 1 >= tokens_.size() || tokens_[i + 1].type != YamlToken::Colon)
 			return fileError(ErrorCode::ParseError, name_, k.line,
 					 "expected ':' after the key '%s'", quote(k.text, q, sizeof(q)));

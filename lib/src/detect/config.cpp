@@ -71,11 +71,12 @@ Status DetectorConfig::validate() const
 		return Status::error(ErrorCode::InvalidArgument, "cascadeThreshold %g is outside (-32768, 32768)", double(cascadeThreshold));
 	if (camera && !camera->valid())
 		return Status::error(ErrorCode::InvalidArgument, "camera is not a valid calibration");
-	// The calibration's pixels must be the frames' (a Tsai file states its size).
-	if (camera && camera->imageWidth() > 0 &&
-	    (camera->imageWidth() != maxWidth || camera->imageHeight() != maxHeight))
-		return Status::error(ErrorCode::InvalidArgument, "the calibration is for %dx%d images, the detector for %dx%d",
-			       camera->imageWidth(), camera->imageHeight(), maxWidth, maxHeight);
+	// The calibration's pixels must be the frames'.
+	if (camera) {
+		const Status st = camera->checkFrameSize(maxWidth, maxHeight);
+		if (!st.ok())
+			return st;
+	}
 	const DetectionMethod m = resolvedMethod();
 	if (m == DetectionMethod::Calibrated && !camera)
 		return Status::error(ErrorCode::InvalidArgument, "the calibrated method needs a camera (DetectorConfig::camera)");
