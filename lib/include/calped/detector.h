@@ -1,8 +1,14 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // The ACF pedestrian detector: Dollár's sliding window over the fast feature pyramid
 // (generic method) or the thesis's calibrated method. All memory is allocated by
-// create(); detect() allocates nothing. One Detector is for one thread at a time;
-// several Detectors may share one Model and run on separate threads.
+// create(); detect() allocates nothing.
+//
+// Threads: a Detector may use several threads itself (DetectorConfig::threads; its
+// output is byte-identical for any number). One Detector must not be used by two threads
+// at once (detect(), lastStats() and the Detections it returned are its own state);
+// several Detectors may run on separate threads, sharing one Model read-only (create()
+// copies what it needs; the Model must only outlive create()) and one CameraModel
+// (copied too).
 #pragma once
 
 #include <cstdint>
@@ -106,6 +112,14 @@ struct DetectorConfig {
 	// bytes per pixel of it); beyond the budget create() returns OutOfMemory with both
 	// numbers. The default, 1 GiB, takes a 1920x1080 frame at resize 3.5 with the INRIA model.
 	uint64_t memoryBudgetBytes = uint64_t(1) << 30;
+	// Threads detect() works on, the calling one included: 1..64. create() starts
+	// threads - 1 workers once; each frame splits its colour conversion, the computed
+	// levels' rectangles and the levels' preparation and classification over them, and
+	// gathers the candidates in level order, so the detections are byte-identical for
+	// any value. More threads than cores only adds waiting. Each thread has its own
+	// scratch (the pyramid's per-level buffers and a candidate lane; pages it never
+	// writes are not resident).
+	int threads = 1;
 
 	// A camera (copied by create()) gives detections their ground position and world
 	// height, and is what the calibrated method needs. Its pixels are the input frame's
