@@ -59,10 +59,10 @@ size_t expectSameForAnyThreads(const Model &model, const DetectorConfig &cfg,
 	return one.size();
 }
 
-std::vector<test::FormattedImage> syntheticFrames(int w, int h, PixelFormat f)
+std::vector<test::FormattedImage> syntheticFrames(int w, int h, PixelFormat f, int count = 3)
 {
 	std::vector<test::FormattedImage> frames;
-	for (uint32_t s = 0; s < 3; s++) {
+	for (uint32_t s = 0; s < uint32_t(count); s++) {
 		const std::vector<uint8_t> rgb = test::randomImage(s, w, h);
 		frames.push_back(test::encodeImage(rgb.data(), w, h, f));
 	}
@@ -117,22 +117,29 @@ TEST(Threads, SyntheticGenericSameForAnyThreadCount)
 	cfg.maxWidth = 320;
 	cfg.maxHeight = 240;
 	cfg.cascadeThreshold = -10.0f; // many candidates: NMS and the gathering order matter
-	for (double resize : { 1.0, 2.0 })
-		for (ResizeAt at : { ResizeAt::Pyramid, ResizeAt::Frame })
-			for (PixelFormat f : { PixelFormat::RGB8, PixelFormat::NV12 }) {
-				cfg.resize = resize;
-				cfg.resizeAt = at;
-				const std::string what = std::string("generic, ") + pixelFormatName(f) +
-							 (at == ResizeAt::Pyramid ? ", pyramid" : ", frame") +
-							 " resize " + std::to_string(resize);
-				expectSameForAnyThreads(model, cfg, syntheticFrames(320, 240, f), what.c_str());
-			}
+	// Resize 1; resize 2 in the pyramid from NV12 (strips converted per thread); resize 2
+	// of the frame first.
+	const struct {
+		double resize;
+		ResizeAt at;
+		PixelFormat format;
+	} cases[] = { { 1.0, ResizeAt::Pyramid, PixelFormat::RGB8 },
+		      { 2.0, ResizeAt::Pyramid, PixelFormat::NV12 },
+		      { 2.0, ResizeAt::Frame, PixelFormat::RGB8 } };
+	for (const auto &c : cases) {
+		cfg.resize = c.resize;
+		cfg.resizeAt = c.at;
+		const std::string what = std::string("generic, ") + pixelFormatName(c.format) +
+					 (c.at == ResizeAt::Pyramid ? ", pyramid" : ", frame") + " resize " +
+					 std::to_string(c.resize);
+		expectSameForAnyThreads(model, cfg, syntheticFrames(320, 240, c.format, 2), what.c_str());
+	}
 	// Smaller frames than the maximum (taps built per frame, per thread) and few
 	// candidates kept (the first ones of the levels in order, the rest dropped).
 	cfg.resize = 2.0;
 	cfg.resizeAt = ResizeAt::Pyramid;
 	cfg.maxCandidates = 50;
-	std::vector<test::FormattedImage> small = syntheticFrames(201, 153, PixelFormat::RGB8);
+	std::vector<test::FormattedImage> small = syntheticFrames(201, 153, PixelFormat::RGB8, 2);
 	expectSameForAnyThreads(model, cfg, small, "generic, smaller frames, 50 candidates");
 }
 
