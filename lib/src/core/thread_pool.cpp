@@ -86,7 +86,11 @@ void ThreadPool::workerLoop(int worker)
 		}
 		seen = g;
 		work(worker);
-		finished_.fetch_add(1, std::memory_order_acq_rel);
+		if (finished_.fetch_add(1, std::memory_order_acq_rel) + 1 == size_ - 1) {
+			// The last one out wakes run() if it parked.
+			std::lock_guard<std::mutex> lock(mutex_);
+			done_.notify_one();
+		}
 	}
 }
 
@@ -111,13 +115,16 @@ void ThreadPool::run(int count, TaskFn fn, void *context)
 	}
 	wake_.notify_all();
 	work(0);
-	// The barrier: every worker has left work() (and so finished its last task).
+	// The barrier: every worker has left work() (and so finished its last task). Spin
+	// a little, then park: on a loaded machine a worker may be off its core for a while.
 	const int workers = size_ - 1;
-	for (int spin = 0; finished_.load(std::memory_order_acquire) < workers; spin++)
-		if (spin < kSpinsBeforePark)
-			CALPED_CPU_RELAX();
-		else
-			std::this_thread::yield();
+	for (int spin = 0; spin < kSpinsBeforePark; spin++) {
+		if (finished_.load(std::memory_order_acquire) == workers)
+			return;
+		CALPED_CPU_RELAX();
+	}
+	std::unique_lock<std::mutex> lock(mutex_);
+	done_.wait(lock, [&] { return finished_.load(std::memory_order_acquire) == workers; });
 }
 
 } // namespace calped

@@ -4,7 +4,8 @@
 // calling thread, which takes part, and returns when every task is done (the one barrier
 // of a section). Tasks are taken in index order from an atomic counter; which thread runs
 // a task must not change its result: each task writes only its own outputs. run() neither
-// allocates nor creates threads; its only lock is the workers' wake-up.
+// allocates nor creates threads; its only lock is the hand-off (waking parked workers, and
+// the caller parking at the barrier after a short spin).
 #pragma once
 
 #include <atomic>
@@ -61,7 +62,8 @@ private:
 	std::atomic<uint64_t> generation_{ 0 };
 	bool quit_ = false;           // under mutex_
 	std::mutex mutex_;
-	std::condition_variable wake_;
+	std::condition_variable wake_; // workers: a new section or quit_
+	std::condition_variable done_; // run(): the last worker finished the section
 };
 
 // f(task, worker) for tasks 0 .. count-1: on the pool, or on this thread without one.
