@@ -3,6 +3,9 @@
 // MOTChallenge detections, JSON Lines and overlay images. See docs/cli.md.
 #include <algorithm>
 #include <cstdio>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <memory>
 #include <string>
 #include <utility>
@@ -250,6 +253,14 @@ int run(const Options &opt)
 	ports::VideoPipe pipe;
 	// With more than one thread, the next image decodes while this one is detected.
 	const bool prefetch = opt.detector.detectorThreads() > 1;
+#if defined(__GLIBC__)
+	// stb allocates and frees a frame-sized buffer per image: kept in the heap, not
+	// mapped and unmapped (page faults) every frame, on whichever thread decodes.
+	if (prefetch) {
+		mallopt(M_MMAP_THRESHOLD, 256 << 20);
+		mallopt(M_TRIM_THRESHOLD, 512 << 20);
+	}
+#endif
 	ImagePrefetch next;
 	long frame = 0;
 	for (size_t index = 0; index < inputs.size(); index++) {
