@@ -70,8 +70,8 @@ SUITE_TEST_ARGS=--setup=sanitize run_suite sanitizers build-asan -Dbuildtype=deb
 	-Db_sanitize=address,undefined -Db_lundef=false -Dtests=true
 
 # ThreadSanitizer over the detector's threads (DetectorConfig::threads): only the core and
-# the threads suite's binary are built, and only its synthetic cases run (a few minutes on
-# 2 cores); the 'tsan' setup makes any report fatal.
+# the threads suite's binary are built, and only its small cases run (the pool, and every
+# parallel section once); the 'tsan' setup makes any report fatal.
 echo
 echo "=== tsan: build-tsan"
 tsan_log=build-tsan/meson-logs/testlog-tsan.junit.xml
@@ -84,7 +84,7 @@ if "${tsan_setup[@]}" -Dbuildtype=debugoptimized -Db_sanitize=thread -Db_lundef=
 	ninja -C build-tsan -j "$jobs" tests/core/threads_tests; then
 	rm -f "$tsan_log"
 	if ! meson test -C build-tsan --setup=tsan --no-rebuild --print-errorlogs threads \
-		--test-args=--gtest_filter='ThreadPool.*:Threads.Synthetic*'; then
+		--test-args=--gtest_filter='ThreadPool.*:Threads.EverySectionOnce'; then
 		failed_steps+=("tsan tests")
 	fi
 	if [[ -f $tsan_log ]]; then

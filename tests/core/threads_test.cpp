@@ -110,6 +110,43 @@ TEST(ThreadPool, RefusesThreadCountsOutOfRange)
 	EXPECT_NE(std::strstr(st.message(), "threads 65 is outside 1..64"), nullptr) << st.message();
 }
 
+// Every parallel section once, small: what the ThreadSanitizer step runs (the cases below
+// take minutes under it). Generic: a smaller NV12 frame than the maximum (strips converted
+// per thread, taps built per thread); calibrated: placed levels (rectangles) with the
+// static gate, and the toolbox's octaves (bands); 1 and 3 threads.
+TEST(Threads, EverySectionOnce)
+{
+	const Model model = test::randomModel(7, 256);
+	DetectorConfig cfg;
+	cfg.maxWidth = 320;
+	cfg.maxHeight = 240;
+	cfg.resize = 2.0;
+	cfg.cascadeThreshold = -10.0f;
+	const std::vector<uint8_t> rgb = test::randomImage(1, 201, 153);
+	const std::vector<test::FormattedImage> small = { test::encodeImage(rgb.data(), 201, 153, PixelFormat::NV12) };
+	auto same = [&](const DetectorConfig &c, const std::vector<test::FormattedImage> &frames, const char *what) {
+		const std::string one = runFrames(model, c, 1, frames);
+		EXPECT_FALSE(one.empty()) << what;
+		EXPECT_TRUE(runFrames(model, c, 3, frames) == one) << what;
+	};
+	same(cfg, small, "generic");
+	Eigen::Matrix3d K;
+	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	cfg.camera = &camera;
+	cfg.method = DetectionMethod::Calibrated;
+	cfg.staticRejection = StaticRejection();
+	cfg.staticRejection->warmupFrames = 1;
+	same(cfg, syntheticFrames(320, 240, PixelFormat::RGB8, 2), "calibrated, placed, static gate");
+	cfg.staticRejection.reset();
+	cfg.calibrated = CalibratedSettings();
+	cfg.calibrated->levels = PyramidLevels::Toolbox;
+	same(cfg, syntheticFrames(320, 240, PixelFormat::RGB8, 1), "calibrated, toolbox");
+}
+
 TEST(Threads, SyntheticGenericSameForAnyThreadCount)
 {
 	const Model model = test::randomModel(7, 512);
