@@ -48,7 +48,7 @@ profile() { # name, first frame, frames, bench arguments... -> $tmp/name.tsv: ke
 	shift 3
 	valgrind --tool=callgrind --callgrind-out-file="$tmp/$name.out" \
 		--toggle-collect='calped::Detector::detect*' "$bench" --model "$model" \
-		--frames data/pets/frames --first "$from" --count "$count" --repeat 1 --resize 2 \
+		--frames data/pets/frames --first "$from" --count "$count" --repeat 1 --resize 2 --threads 1 \
 		--calib "$calib" "$@" >/dev/null 2>&1
 	# Self cost per function, grouped: kernels by name without their build suffix (the
 	# resampler's column pass counts as resampling), everything else as "other".

@@ -6,7 +6,9 @@
 // the end within 1% of the value after warm-up, and no heap allocation in the per-frame
 // path. Usage (docs/benchmarks.md):
 //   soak_detector --model BLOB --frames DIR --calib FILE [--total N] [--resize R]
-//                 [--warmup N] [--every N] [--count N] [--generic]
+//                 [--warmup N] [--every N] [--count N] [--generic] [--pyramid] [--threads N]
+// (--pyramid: the default configuration, resize inside the pyramid and placed levels;
+// without it the frame is resized first with the toolbox's octaves, as the soak always ran)
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -156,7 +158,8 @@ int usage()
 {
 	std::fprintf(stderr,
 		     "usage: soak_detector --model BLOB --frames DIR --calib FILE [--total N] "
-		     "[--resize R] [--warmup N] [--every N] [--count N] [--generic]\n");
+		     "[--resize R] [--warmup N] [--every N] [--count N] [--generic] [--pyramid] "
+		     "[--threads N]\n");
 	return 2;
 }
 
@@ -166,14 +169,16 @@ struct Options {
 	int count = 0; // frames to load, 0 = all
 	double resize = 1.0;
 	bool generic = false;
+	bool pyramid = false; // --pyramid: the default configuration (resize in the pyramid, placed levels)
+	int threads = 1;      // --threads N: DetectorConfig::threads
 };
 
 bool parse(int argc, char **argv, Options &o)
 {
 	for (int i = 1; i < argc; i++) {
 		const std::string a = argv[i];
-		if (a == "--generic") {
-			o.generic = true;
+		if (a == "--generic" || a == "--pyramid") {
+			(a == "--generic" ? o.generic : o.pyramid) = true;
 			continue;
 		}
 		if (i + 1 >= argc)
@@ -195,6 +200,8 @@ bool parse(int argc, char **argv, Options &o)
 			o.count = std::atoi(v);
 		else if (a == "--resize")
 			o.resize = std::atof(v);
+		else if (a == "--threads")
+			o.threads = std::atoi(v);
 		else
 			return false;
 	}
@@ -262,13 +269,16 @@ int main(int argc, char **argv)
 	const long rssFrames = residentBytes();
 
 	// The programs' DetectorConfig (tools/common); the soak keeps resizing the frame first
-	// with the toolbox's octaves, as it always ran.
+	// with the toolbox's octaves, as it always ran, unless --pyramid.
 	apps::DetectorOptions detectorOptions;
 	detectorOptions.calibPath = opt.calib;
 	detectorOptions.method = opt.generic ? apps::MethodChoice::Generic : apps::MethodChoice::Calibrated;
 	detectorOptions.resize = opt.resize;
-	detectorOptions.resizeAt = apps::ResizeChoice::Frame;
-	detectorOptions.levels = apps::LevelsChoice::Toolbox;
+	detectorOptions.threads = opt.threads;
+	if (!opt.pyramid) {
+		detectorOptions.resizeAt = apps::ResizeChoice::Frame;
+		detectorOptions.levels = apps::LevelsChoice::Toolbox;
+	}
 	const DetectorConfig cfg =
 		apps::makeDetectorConfig(detectorOptions, frames[0].width, frames[0].height, &camera);
 	std::unique_ptr<Detector> det;

@@ -33,7 +33,8 @@ namespace {
 using namespace calped;
 
 enum { PROP_0, PROP_MODEL, PROP_CALIBRATION, PROP_METHOD, PROP_RESIZE, PROP_RESIZE_AT,
-       PROP_LEVELS, PROP_REJECT_STATIC, PROP_MIN_SCORE, PROP_DRAW, PROP_MQTT, PROP_CAMERA_ID };
+       PROP_LEVELS, PROP_REJECT_STATIC, PROP_MIN_SCORE, PROP_DRAW, PROP_MQTT, PROP_CAMERA_ID,
+       PROP_THREADS };
 
 constexpr double kDefaultResize = 1.0;
 constexpr double kDefaultMinScore = -G_MAXDOUBLE;
@@ -46,6 +47,7 @@ struct Settings {
 	ResizeAt resizeAt = ResizeAt::Pyramid;
 	PyramidLevels levels = PyramidLevels::Placed;
 	bool rejectStatic = false;
+	int threads = 1; // DetectorConfig::threads
 	double minScore = kDefaultMinScore;
 	bool draw = false;
 	std::string mqtt, cameraId; // mqtt://HOST[:PORT]/TOPIC (docs/mqtt.md); empty: none
@@ -210,6 +212,7 @@ DetectorConfig configFor(const Settings &s, Session &session, int width, int hei
 	c.resize = s.resize;
 	c.resizeAt = s.resizeAt;
 	c.method = s.method;
+	c.threads = s.threads;
 	if (session.hasCamera)
 		c.camera = &session.camera;
 	// Refused with the generic method: set only where the calibrated method runs.
@@ -464,6 +467,9 @@ void calpedSetProperty(GObject *object, guint id, const GValue *value, GParamSpe
 	case PROP_REJECT_STATIC:
 		s.rejectStatic = g_value_get_boolean(value);
 		break;
+	case PROP_THREADS:
+		s.threads = g_value_get_int(value);
+		break;
 	case PROP_MIN_SCORE:
 		s.minScore = g_value_get_double(value);
 		break;
@@ -509,6 +515,9 @@ void calpedGetProperty(GObject *object, guint id, GValue *value, GParamSpec *psp
 		break;
 	case PROP_REJECT_STATIC:
 		g_value_set_boolean(value, s.rejectStatic);
+		break;
+	case PROP_THREADS:
+		g_value_set_int(value, s.threads);
 		break;
 	case PROP_MIN_SCORE:
 		g_value_set_double(value, s.minScore);
@@ -586,6 +595,11 @@ static void gst_calped_class_init(GstCalpedClass *klass)
 		g_param_spec_boolean("reject-static", "Reject static",
 				     "fixed camera: drop detections on static scene structure (after 50 frames)",
 				     FALSE, kReady));
+	g_object_class_install_property(gobject, PROP_THREADS,
+		g_param_spec_int("threads", "Threads",
+				 "threads the detector works on, the streaming thread included "
+				 "(the detections do not depend on it)",
+				 1, 64, 1, kReady));
 	g_object_class_install_property(gobject, PROP_MIN_SCORE,
 		g_param_spec_double("min-score", "Minimum score",
 				    "report only detections scoring at least this (default: all)",

@@ -5,7 +5,8 @@
 #   build/       release
 #   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer, meson's 'sanitize' setup
 #                (any report fails the test; docs/testing.md)
-# then runs every libFuzzer target for $CALPED_FUZZ_SECONDS (default 10) seconds
+# then builds the core and the threads suite with ThreadSanitizer (build-tsan/, the 'tsan'
+# setup) and runs its synthetic cases, then runs every libFuzzer target for $CALPED_FUZZ_SECONDS (default 10) seconds
 # (scripts/fuzz.sh, build-fuzz/, clang-14), then cross-builds the suite for each of
 # $CALPED_CROSS (default aarch64; empty: none) and runs it under qemu-user
 # (scripts/cross-test.sh, build-aarch64/).
@@ -78,6 +79,33 @@ step_done release
 SUITE_TEST_ARGS=--setup=sanitize run_suite sanitizers build-asan -Dbuildtype=debugoptimized \
 	-Db_sanitize=address,undefined -Db_lundef=false -Dtests=true
 step_done sanitizers
+
+# ThreadSanitizer over the detector's threads (DetectorConfig::threads): only the core and
+# the threads suite's binary are built, and only its small cases run (the pool, and every
+# parallel section once); the 'tsan' setup makes any report fatal.
+echo
+echo "=== tsan: build-tsan"
+tsan_log=build-tsan/meson-logs/testlog-tsan.junit.xml
+if [[ -f build-tsan/meson-private/coredata.dat ]]; then
+	tsan_setup=(meson setup --reconfigure build-tsan)
+else
+	tsan_setup=(meson setup build-tsan)
+fi
+if "${tsan_setup[@]}" -Dbuildtype=debugoptimized -Db_sanitize=thread -Db_lundef=false -Dtests=true &&
+	ninja -C build-tsan -j "$jobs" tests/core/threads_tests; then
+	rm -f "$tsan_log"
+	if ! meson test -C build-tsan --setup=tsan --no-rebuild --print-errorlogs threads \
+		--test-args=--gtest_filter='ThreadPool.*:Threads.EverySectionOnce'; then
+		failed_steps+=("tsan tests")
+	fi
+	if [[ -f $tsan_log ]]; then
+		junits+=("$tsan_log")
+	else
+		failed_steps+=("tsan: no junit log")
+	fi
+else
+	failed_steps+=("tsan build")
+fi
 
 # Every fuzz target briefly, on its seeds and what earlier runs found: one junit case each.
 echo

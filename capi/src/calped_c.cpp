@@ -173,6 +173,7 @@ Status toCpp(const calped_config *c, const calped_camera *camera, calped::Detect
 	d.maxCandidates = c->max_candidates;
 	d.cascadeThreshold = c->cascade_threshold;
 	d.nms = c->nms != 0;
+	d.threads = c->threads;
 	d.camera = camera ? &camera->camera : nullptr;
 	d.method = static_cast<calped::DetectionMethod>(c->method);
 	if (c->method < CALPED_METHOD_AUTO || c->method > CALPED_METHOD_CALIBRATED)
@@ -349,6 +350,7 @@ void calped_config_defaults(calped_config *config)
 	config->static_difference = r.difference;
 	config->static_min_foreground = r.minForeground;
 	config->static_warmup_frames = r.warmupFrames;
+	config->threads = d.threads;
 }
 
 calped_status calped_config_validate(const calped_config *config, const calped_camera *camera,

@@ -294,7 +294,7 @@ class Detector(_Handle):
     from the library (default_settings()): method ("auto", "generic", "calibrated"),
     resize, resize_at ("pyramid", "frame"), levels ("placed", "toolbox"),
     min_person_height, max_person_height, static_rejection, nms, box_voting,
-    max_candidates, cascade_threshold, ... Invalid settings raise InvalidArgumentError
+    max_candidates, cascade_threshold, threads, ... Invalid settings raise InvalidArgumentError
     naming the setting. The model and camera may be closed afterwards (they are copied).
     """
     _free = _capi.lib.calped_detector_free

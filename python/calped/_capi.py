@@ -39,6 +39,7 @@ class Config(ctypes.Structure):
         ("static_difference", ctypes.c_int),
         ("static_min_foreground", ctypes.c_float),
         ("static_warmup_frames", ctypes.c_int),
+        ("threads", ctypes.c_int),
     ]
 
 

@@ -54,6 +54,7 @@ TEST(CApi, DefaultsAreTheCppDefaults)
 	EXPECT_EQ(c.static_difference, r.difference);
 	EXPECT_EQ(c.static_min_foreground, r.minForeground);
 	EXPECT_EQ(c.static_warmup_frames, r.warmupFrames);
+	EXPECT_EQ(c.threads, d.threads);
 	calped_error err;
 	EXPECT_EQ(calped_config_validate(&c, nullptr, &err), CALPED_OK) << err.message;
 }

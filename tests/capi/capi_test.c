@@ -170,6 +170,13 @@ static void test_config(const calped_model *model)
 	CHECK(det == NULL);
 
 	calped_config_defaults(&cfg);
+	CHECK(cfg.threads == 1);
+	cfg.threads = 65;
+	st = calped_detector_create(model, NULL, &cfg, &det, &err);
+	expect_error(st, &err, CALPED_ERR_INVALID_ARGUMENT, "threads 65", "config: threads 65");
+	CHECK(det == NULL);
+
+	calped_config_defaults(&cfg);
 	cfg.method = CALPED_METHOD_CALIBRATED;
 	st = calped_config_validate(&cfg, NULL, &err);
 	expect_error(st, &err, CALPED_ERR_INVALID_ARGUMENT, "camera", "config: calibrated, no camera");

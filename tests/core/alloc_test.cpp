@@ -214,6 +214,51 @@ TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 	}
 }
 
+TEST(BoundedMemory, FourThreadsAllocateNothing)
+{
+	// The pool's hand-off, the per-thread scratch and the candidate lanes: made by
+	// create(), nothing per frame, with either method and a converted pixel format.
+	Eigen::Matrix3d K;
+	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	const Model model = test::randomModel(7, 512);
+	for (int variant = 0; variant < 3; variant++) {
+		DetectorConfig cfg;
+		cfg.maxWidth = 320;
+		cfg.maxHeight = 240;
+		cfg.resize = 2.0;
+		cfg.cascadeThreshold = -10.0f;
+		cfg.threads = 4;
+		if (variant > 0) {
+			cfg.camera = &camera;
+			cfg.method = DetectionMethod::Calibrated;
+			cfg.calibrated = CalibratedSettings();
+			cfg.calibrated->levels = variant == 1 ? PyramidLevels::Placed : PyramidLevels::Toolbox;
+		}
+		std::unique_ptr<Detector> det;
+		ASSERT_TRUE(Detector::create(model, cfg, det).ok());
+		std::vector<test::FormattedImage> frames;
+		for (uint32_t s = 0; s < 3; s++) {
+			const auto rgb = test::randomImage(s, 320, 240);
+			frames.push_back(test::encodeImage(rgb.data(), 320, 240, s == 1 ? PixelFormat::NV12 : PixelFormat::RGB8));
+		}
+		// Smaller frames take another path (taps built per frame) without a camera.
+		if (variant == 0) {
+			const auto rgb = test::randomImage(9, 201, 153);
+			frames.push_back(test::encodeImage(rgb.data(), 201, 153, PixelFormat::RGB8));
+		}
+		int detections = 0;
+		EXPECT_EQ(allocationsDuring(*det, frames, &detections), 0) << "variant " << variant;
+		EXPECT_GT(det->lastStats().windows, 0u);
+		std::printf("4 threads, %s: %d detections, 0 allocations\n",
+			    variant == 0 ? "generic" : variant == 1 ? "calibrated, placed levels" : "calibrated, toolbox levels",
+			    detections);
+	}
+}
+
 TEST(BoundedMemory, DetectAllocatesNothingOnPets)
 {
 	const std::string blobPath = test::inriaModelBlob();

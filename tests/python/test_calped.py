@@ -118,6 +118,8 @@ def test_bad_settings_are_named(synthetic):
         calped.Detector(synthetic, 640, 480, method="fastest")
     with pytest.raises(calped.InvalidArgumentError, match="staticRejection.difference"):
         calped.Detector(synthetic, 640, 480, static_rejection=True, static_difference=300)
+    with pytest.raises(calped.InvalidArgumentError, match="threads 0 is outside 1..64"):
+        calped.Detector(synthetic, 640, 480, threads=0)
     with pytest.raises(TypeError, match="unknown setting 'speed'"):
         calped.Detector(synthetic, 640, 480, speed=2)
 
@@ -193,6 +195,15 @@ def test_every_layout(synthetic):
     assert det.detect(yuyv, format="yuyv").dtype == calped.DETECTION_DTYPE
     s = det.stats
     assert s["windows"] > 0 and s["ms_total"] > 0 and det.method == "generic"
+
+
+def test_threads_give_the_same_detections(synthetic):
+    one = calped.Detector(synthetic, 640, 480)
+    three = calped.Detector(synthetic, 640, 480, threads=3)
+    for seed in (1, 2, 3):
+        rgb = random_rgb(seed=seed)
+        assert_same(three.detect(rgb), one.detect(rgb))
+    assert three.stats["windows"] == one.stats["windows"] > 0
 
 
 def reference(model, ppm, *args):

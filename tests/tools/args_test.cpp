@@ -158,5 +158,25 @@ TEST(DetectorOptions, DefaultsAndTheConfigTheyMake)
 	EXPECT_TRUE(checkDetectorOptions(o, true, DetectorFlags::Eval, error)) << error;
 }
 
+// --threads N: 1..64; without it the online cores (at least 1, at most 64).
+TEST(DetectorOptions, Threads)
+{
+	DetectorOptions o;
+	std::string error;
+	const int cores = o.detectorThreads();
+	EXPECT_GE(cores, 1);
+	EXPECT_LE(cores, 64);
+	EXPECT_EQ(makeDetectorConfig(o, 640, 480, nullptr).threads, cores);
+	ASSERT_TRUE(takeDetectorOption(ParsedOption{ "threads", "--threads", "3" }, o, error));
+	EXPECT_TRUE(error.empty()) << error;
+	EXPECT_EQ(makeDetectorConfig(o, 640, 480, nullptr).threads, 3);
+	for (const char *bad : { "0", "65", "two", "-1" }) {
+		DetectorOptions p;
+		ASSERT_TRUE(takeDetectorOption(ParsedOption{ "threads", "--threads", bad }, p, error));
+		EXPECT_FALSE(error.empty()) << bad;
+		EXPECT_NE(error.find("--threads"), std::string::npos) << error;
+	}
+}
+
 } // namespace
 } // namespace calped::apps

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "detector_options.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <unistd.h>
 
 #include "file_io.h"
 
@@ -28,6 +30,14 @@ bool DetectorOptions::placedLevels() const
 	return levels == LevelsChoice::Placed || resizeInPyramid() || resize == 1.0;
 }
 
+int DetectorOptions::detectorThreads() const
+{
+	if (threads > 0)
+		return int(threads);
+	const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+	return int(std::clamp(cores, 1L, 64L));
+}
+
 std::vector<OptionSpec> detectorOptionTable(DetectorFlags which)
 {
 	std::vector<OptionSpec> t = {
@@ -49,6 +59,8 @@ std::vector<OptionSpec> detectorOptionTable(DetectorFlags which)
 	t.push_back({ "resize-at", "WHERE", "pyramid (default): the resize inside the feature pyramid\n"
 					    "(the toolbox's nOctUp); frame: resize the frame first,\n"
 					    "as the thesis does (the default when R < 1)" });
+	t.push_back({ "threads", "N", "threads the detector works on, 1..64 (default: the number\n"
+				      "of online cores); the detections do not depend on it" });
 	t.push_back({ "levels", "L", "calibrated method: placed (default) computes channels at\n"
 				     "levels placed among the needed ones; toolbox: the toolbox's\n"
 				     "octaves (the default when the frame is resized first)" });
@@ -117,6 +129,8 @@ bool takeDetectorOption(const ParsedOption &o, DetectorOptions &out, std::string
 		out.scoreRatio = true;
 	} else if (n == "region-frames") {
 		wholeIn(o, 1, 1000, out.regionFrames, error);
+	} else if (n == "threads") {
+		wholeIn(o, 1, 64, out.threads, error);
 	} else if (n == "min-score") {
 		if (!parseNumber(o.value, out.minScore))
 			error = badValue(o, "a number");
@@ -245,6 +259,7 @@ DetectorConfig makeDetectorConfig(const DetectorOptions &o, int width, int heigh
 	config.camera = camera;
 	// --no-nms returns every window that passed the cascade: nothing left to vote on.
 	config.nms = !o.noNms;
+	config.threads = o.detectorThreads();
 	if (o.rejectStatic)
 		config.staticRejection = StaticRejection();
 	if (o.calibrated()) {

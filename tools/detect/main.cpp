@@ -3,6 +3,9 @@
 // MOTChallenge detections, JSON Lines and overlay images. See docs/cli.md.
 #include <algorithm>
 #include <cstdio>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <memory>
 #include <string>
 #include <utility>
@@ -16,6 +19,7 @@
 #include "frame_detector.h"
 #include "frame_list.h"
 #include "image_io.h"
+#include "image_prefetch.h"
 #include "json_frame.h"
 #include "mqtt_options.h"
 #include "overlay.h"
@@ -247,8 +251,20 @@ int run(const Options &opt)
 	RgbImage image;
 	std::vector<Detection> kept;
 	ports::VideoPipe pipe;
+	// With more than one thread, the next image decodes while this one is detected.
+	const bool prefetch = opt.detector.detectorThreads() > 1;
+#if defined(__GLIBC__)
+	// stb allocates and frees a frame-sized buffer per image: kept in the heap, not
+	// mapped and unmapped (page faults) every frame, on whichever thread decodes.
+	if (prefetch) {
+		mallopt(M_MMAP_THRESHOLD, 256 << 20);
+		mallopt(M_TRIM_THRESHOLD, 512 << 20);
+	}
+#endif
+	ImagePrefetch next;
 	long frame = 0;
-	for (const Input &in : inputs) {
+	for (size_t index = 0; index < inputs.size(); index++) {
+		const Input &in = inputs[index];
 		if (in.video) {
 			const Status st = pipe.open(in.path, in.width, in.height);
 			if (!st.ok())
@@ -272,10 +288,14 @@ int run(const Options &opt)
 					break;
 				if (!st.ok())
 					return fail(kExitRuntime, st.message());
-			} else if (!decoder.decode(in.path, image, error)) {
+			} else if (!next.take(in.path, image, error) &&
+				   (!error.empty() || !decoder.decode(in.path, image, error))) {
 				return fail(kExitRuntime, error);
 			}
 			frame++;
+			if (prefetch && index + 1 < inputs.size() && !inputs[index + 1].video &&
+			    (opt.maxFrames <= 0 || frame < opt.maxFrames))
+				next.start(inputs[index + 1].path);
 
 			Detections dets;
 			Status st = detector.detect(

@@ -191,6 +191,9 @@ typedef struct calped_config {
 	int static_difference;         /* grey levels 1..254, default 10 */
 	float static_min_foreground;   /* 0..1, default 0.1 */
 	int static_warmup_frames;      /* >= 1, default 50 */
+	/* Threads the detector works on, the calling one included: 1..64, default 1
+	 * (calped::DetectorConfig::threads; the detections do not depend on it). */
+	int threads;
 } calped_config;
 
 /* Fills *config with the defaults, exactly those of the C++ DetectorConfig,

@@ -3,16 +3,16 @@
 // (generic method) or the thesis's calibrated method. All memory is allocated by
 // create(); detect() allocates nothing.
 //
-// Threads: a Detector is not thread-safe. Call one Detector's methods from one thread at
-// a time (it owns its buffers, its static background and its last result); two threads
-// calling detect() on the same Detector race on those buffers. Separate Detectors are
-// independent: each may run on its own thread, concurrently, and they may share one
-// Model (and one CameraModel): create() only reads them and copies what it needs, so
-// several threads may create detectors from one Model at once, and the Model may be freed
-// afterwards (it must not be modified while a create() reads it). Results are identical to running
-// the same detectors one after the other (tests/core/threads_test.cpp). Any worker
-// threads a Detector may use inside one detect() call are its own and internal: they
-// change nothing in this contract.
+// Threads: a Detector may use several threads itself (DetectorConfig::threads: a pool
+// made by create(), internal to the detector; its output is byte-identical for any
+// number). A Detector is not thread-safe: call one Detector's methods from one thread at a
+// time (detect(), lastStats() and the Detections it returned are its own state, with its
+// buffers and static background). Separate Detectors are independent: each may run on its
+// own thread, concurrently, and they may share one Model (and one CameraModel): create()
+// only reads them and copies what it needs, so several threads may create detectors from
+// one Model at once, and the Model may be freed afterwards (it must not be modified while
+// a create() reads it). Results are identical to running the same detectors one after the
+// other (tests/core/detectors_on_threads_test.cpp).
 #pragma once
 
 #include <cstdint>
@@ -116,6 +116,14 @@ struct DetectorConfig {
 	// bytes per pixel of it); beyond the budget create() returns OutOfMemory with both
 	// numbers. The default, 1 GiB, takes a 1920x1080 frame at resize 3.5 with the INRIA model.
 	uint64_t memoryBudgetBytes = uint64_t(1) << 30;
+	// Threads detect() works on, the calling one included: 1..64. create() starts
+	// threads - 1 workers once; each frame splits its colour conversion, the computed
+	// levels' rectangles and the levels' preparation and classification over them, and
+	// gathers the candidates in level order, so the detections are byte-identical for
+	// any value. More threads than cores only adds waiting. Each thread has its own
+	// scratch (the pyramid's per-level buffers and a candidate lane; pages it never
+	// writes are not resident).
+	int threads = 1;
 
 	// A camera (copied by create()) gives detections their ground position and world
 	// height, and is what the calibrated method needs. Its pixels are the input frame's

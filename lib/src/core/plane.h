@@ -5,7 +5,10 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <type_traits>
 
 namespace calped {
 
@@ -23,18 +26,29 @@ template <typename T>
 class PlaneBuffer
 {
 public:
-	// Reserve room for planes up to maxWidth x maxHeight (with extra slack elements).
+	static_assert(std::is_trivial<T>::value, "planes hold plain samples");
+
+	// Reserve room for planes up to maxWidth x maxHeight (with extra slack elements),
+	// zeroed. calloc: large buffers come from the system as untouched zero pages, so
+	// memory is only resident where a frame actually writes (per-thread scratch sized for
+	// the largest level but used in rectangles costs little). Throws std::bad_alloc.
 	void allocate(int maxWidth, int maxHeight, size_t slack = 0)
 	{
-		capacity_ = size_t(maxWidth) * size_t(maxHeight) + slack;
-		storage_.assign(capacity_, T());
+		storage_.reset();
+		capacity_ = 0;
+		const size_t n = size_t(maxWidth) * size_t(maxHeight) + slack;
+		T *p = static_cast<T *>(std::calloc(n > 0 ? n : 1, sizeof(T)));
+		if (!p)
+			throw std::bad_alloc();
+		storage_.reset(p);
+		capacity_ = n;
 	}
 	size_t capacity() const { return capacity_; }
 	// A view of width x height packed rows; the caller checked the size fits.
 	Plane<T> view(int width, int height)
 	{
 		Plane<T> p;
-		p.data = storage_.data();
+		p.data = storage_.get();
 		p.width = width;
 		p.height = height;
 		p.stride = width;
@@ -44,10 +58,13 @@ public:
 	{
 		return size_t(width) * size_t(height) <= capacity_;
 	}
-	T *data() { return storage_.data(); }
+	T *data() { return storage_.get(); }
 
 private:
-	std::vector<T> storage_;
+	struct Free {
+		void operator()(T *p) const { std::free(p); }
+	};
+	std::unique_ptr<T[], Free> storage_;
 	size_t capacity_ = 0;
 };
 

@@ -64,6 +64,10 @@ Status DetectorConfig::validate() const
 	if (resizeAt == ResizeAt::Frame &&
 	    (resizedSize(maxWidth, resize) < 1 || resizedSize(maxHeight, resize) < 1))
 		return Status::error(ErrorCode::InvalidArgument, "resize %g leaves no pixels of %dx%d frames", resize, maxWidth, maxHeight);
+	if (threads < 1 || threads > 64)
+		return Status::error(ErrorCode::InvalidArgument,
+				     "threads %d is outside 1..64 (the detector's worker threads, the calling one included)",
+				     threads);
 	if (maxCandidates < 1 || maxCandidates > (1 << 24))
 		return Status::error(ErrorCode::InvalidArgument, "maxCandidates %d is outside 1..16777216", maxCandidates);
 	// Scores are Q16 in 32 bits: a threshold must be representable.

@@ -39,10 +39,14 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	const int frameH = resizedSize(cfg.maxHeight, frameResize);
 	const WindowBoxes boxes(params, frameResize);
 
+	st = pool_.start(cfg.threads);
+	if (!st.ok())
+		return st;
+	ThreadPool *pool = cfg.threads > 1 ? &pool_ : nullptr;
 	st = input_.init(cfg.maxWidth, cfg.maxHeight, frameResize);
 	if (!st.ok())
 		return st;
-	st = pyramid.init(params, frameW, frameH, kernels::bestKernels(), inPyramid ? cfg.resize : 1.0);
+	st = pyramid.init(params, frameW, frameH, kernels::bestKernels(), inPyramid ? cfg.resize : 1.0, pool);
 	if (!st.ok())
 		return st;
 	try {
@@ -57,7 +61,7 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	}
 	if (!std::isnan(cfg.cascadeThreshold))
 		classifier.setCascadeThreshold(cfg.cascadeThreshold);
-	st = candidates_.init(cfg.maxCandidates, boxes);
+	st = candidates_.init(cfg.maxCandidates, boxes, pool_.size());
 	if (!st.ok())
 		return st;
 	const CalibratedSettings *cal = calibrated_ ? &*config.calibrated : nullptr;
@@ -73,7 +77,7 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	}
 	if (calibrated_)
 		return calibratedSearch.init(camera_, params, *cal, boxes, frameW, frameH, cfg.maxCandidates,
-				       pyramid, classifier, rejectStatic_ ? &static_ : nullptr);
+				       pyramid, classifier, rejectStatic_ ? &static_ : nullptr, pool);
 	return Status::success();
 }
 
@@ -123,7 +127,8 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 		calibratedSearch.beginFrame(stats);
 		st = calibratedSearch.run(frame, pyramid, classifier, candidates_, stats);
 	} else {
-		st = searchEveryWindow(frame, pyramid, classifier, candidates_, stats);
+		st = searchEveryWindow(frame, pyramid, classifier, candidates_, stats,
+				       pool_.size() > 1 ? &pool_ : nullptr);
 	}
 	if (!st.ok())
 		return st;
@@ -148,7 +153,7 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 
 	stats.computedLevels = pyramid.computedCount;
 	stats.msChannels = pyramid.msChannels;
-	stats.msApprox = pyramid.msApprox + pyramid.msSmooth;
+	stats.msApprox = pyramid.msApprox() + pyramid.msSmooth();
 	stats.msTotal = msSince(tStart);
 	out.items = boxes;
 	out.count = kept;

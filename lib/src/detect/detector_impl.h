@@ -8,6 +8,7 @@
 
 #include "classify/candidates.h"
 #include "classify/classifier.h"
+#include "core/thread_pool.h"
 #include "input/input_stage.h"
 #include "pyramid/pyramid.h"
 #include "search/calibrated_search.h"
@@ -32,6 +33,7 @@ public:
 private:
 	Status checkImage(const ImageView &image) const;
 
+	ThreadPool pool_; // DetectorConfig::threads: the stages split their work over it
 	bool calibrated_ = false;
 	bool hasCamera_ = false;
 	CameraModel camera_;

@@ -155,13 +155,18 @@ int FrameInput::stripRows() const { return convert_ ? kStripRows : image_.height
 
 const uint8_t *FrameInput::rows(int y0, int count, ptrdiff_t &stride)
 {
+	return rows(y0, count, stride, strip_.data());
+}
+
+const uint8_t *FrameInput::rows(int y0, int count, ptrdiff_t &stride, uint8_t *scratch) const
+{
 	if (!convert_) {
 		stride = image_.strides[0];
 		return image_.planes[0] + y0 * stride;
 	}
 	stride = ptrdiff_t(3) * image_.width;
-	convert_(raw_, y0, count, strip_.data(), stride);
-	return strip_.data();
+	convert_(raw_, y0, count, scratch, stride);
+	return scratch;
 }
 
 const uint8_t *FrameInput::wholeFrame(ptrdiff_t &stride)

@@ -40,6 +40,9 @@ public:
 	// Rows [y0, y0 + count) as interleaved RGB8 (count <= stripRows()): the frame itself
 	// for RGB8, otherwise converted into the strip scratch (valid until the next call).
 	const uint8_t *rows(int y0, int count, ptrdiff_t &stride);
+	// The same converted into the caller's scratch (kStripRows rows of the frame's width
+	// in RGB8): threads may convert different strips of one frame at once.
+	const uint8_t *rows(int y0, int count, ptrdiff_t &stride, uint8_t *scratch) const;
 	// The whole frame as RGB8: the frame itself for RGB8, otherwise converted into the
 	// full-frame buffer (needs init() with wholeFrames).
 	const uint8_t *wholeFrame(ptrdiff_t &stride);

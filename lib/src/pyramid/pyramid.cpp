@@ -12,10 +12,45 @@ namespace calped {
 
 using namespace pyramid_util;
 
+Status Pyramid::allocateScratch(Scratch &s, int luvW, int luvH, int maxWidth)
+{
+	s.channels.init(params_, luvW, luvH, *k_);
+	for (int c = 0; c < 3; c++)
+		s.levelLuv[c].allocate(luvW, luvH);
+	s.resampleTmp.allocate(std::max(luvW, maxWidth_), std::max(luvH, maxHeight_));
+	const size_t taps = size_t(std::max(luvW, luvH)) + 8;
+	s.xTaps.resize(taps);
+	s.yTaps.resize(taps);
+	s.yTapsGain.resize(taps);
+	s.yTapsBand.resize(taps * kMaxTapSets);
+	s.approx.allocate(maxLevelW_, maxLevelH_ * kChannelCount);
+	s.levelBuf.allocate(int(planeStride_), kChannelCount);
+	s.strip.allocate(maxWidth * 3, FrameInput::kStripRows);
+	s.rowTmp.assign(size_t(std::max(luvW, luvH)) * 2 + 64, 0);
+	return Status::success();
+}
+
+double Pyramid::msApprox() const
+{
+	double ms = 0;
+	for (const auto &s : scratch_)
+		ms += s->msApprox;
+	return ms;
+}
+
+double Pyramid::msSmooth() const
+{
+	double ms = 0;
+	for (const auto &s : scratch_)
+		ms += s->msSmooth;
+	return ms;
+}
+
 Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
-		     const kernels::KernelTable &k, double upscale)
+		     const kernels::KernelTable &k, double upscale, ThreadPool *pool)
 {
 	k_ = &k;
+	pool_ = pool;
 	if (!(upscale >= 1.0 && upscale <= 8.0))
 		return Status::error(ErrorCode::InvalidArgument,
 				     "pyramid upscale %g is outside [1, 8]", upscale);
@@ -57,18 +92,10 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		// processed.
 		const double up = upscale * double(1 << params.nOctUp);
 		const int luvW = int(std::ceil(maxWidth * up)) + 8, luvH = int(std::ceil(maxHeight * up)) + 8;
-		channels_.init(params, luvW, luvH, k);
 		for (int c = 0; c < 3; c++) {
 			luv_[c].allocate(maxWidth, maxHeight);
 			halfLuv_[c].allocate(maxWidth / 2 + 4, maxHeight / 2 + 4);
-			levelLuv_[c].allocate(luvW, luvH);
 		}
-		resampleTmp_.allocate(std::max(luvW, maxWidth), std::max(luvH, maxHeight));
-		const size_t taps = size_t(std::max(luvW, luvH)) + 8;
-		xTaps_.resize(taps);
-		yTaps_.resize(taps);
-		yTapsGain_.resize(taps);
-		yTapsBand_.resize(taps * kMaxTapSets);
 
 		maxLevelH_ = luvH / 4 + 2;
 		maxLevelW_ = luvW / 4 + 2;
@@ -76,11 +103,15 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		// plus room for the rounding of every level's size.
 		const size_t cells = size_t(maxLevelH_) * maxLevelW_;
 		computedStore_.assign(kChannelCount * (cells * 4 / 3 + size_t(kMaxLevels) * (maxLevelH_ + maxLevelW_ + 4)), 0);
-		approx_.allocate(maxLevelW_, maxLevelH_ * kChannelCount);
 		rowStride_ = maxLevelW_ + 2 * padW_;
 		planeStride_ = rowStride_ * (maxLevelH_ + 2 * padH_);
-		levelBuf_.assign(size_t(kChannelCount) * planeStride_, 0);
-		rowTmp_.assign(size_t(std::max(luvW, luvH)) * 2 + 64, 0);
+		// One scratch set per thread; untouched pages of the others cost no memory.
+		const int threads = pool ? pool->size() : 1;
+		scratch_.clear();
+		for (int w = 0; w < threads; w++) {
+			scratch_.push_back(std::make_unique<Scratch>());
+			allocateScratch(*scratch_.back(), luvW, luvH, maxWidth);
+		}
 		if (!buildTapCache())
 			return Status::error(ErrorCode::InvalidArgument,
 					     "%dx%d frames need a pyramid level resampled more than 10x "
@@ -182,14 +213,15 @@ Status Pyramid::compute(FrameInput &input, const PyramidDemand &demand)
 	return Status::success();
 }
 
-LevelChannels Pyramid::prepare(int i, const LevelRect *rects, int count)
+LevelChannels Pyramid::prepare(int i, const LevelRect *rects, int count, int worker)
 {
+	Scratch &s = *scratch_[size_t(worker)];
 	if (!rects)
-		return prepareRect(i, nullptr, nullptr);
+		return prepareRect(i, nullptr, nullptr, s);
 	// Rectangles of one level share its buffer: each call fills its own part.
 	LevelChannels out;
 	for (int k = 0; k < count; k++)
-		out = prepareRect(i, &rects[k].rows, &rects[k].cols);
+		out = prepareRect(i, &rects[k].rows, &rects[k].cols, s);
 	return out;
 }
 

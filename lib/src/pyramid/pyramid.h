@@ -8,9 +8,13 @@
 #include <calped/model.h>
 #include <calped/status.h>
 
+#include <memory>
+#include <vector>
+
 #include "channels/channel_computer.h"
 #include "input/frame_input.h"
 #include "core/plane.h"
+#include "core/thread_pool.h"
 #include "kernels.h"
 #include "pyramid/cell_range.h"
 #include "pyramid/scales.h"
@@ -57,9 +61,14 @@ public:
 	// maxWidth x maxHeight: the largest RGB image compute() will see (after any resize).
 	// upscale >= 1: the levels are those of the image resized by this factor, each
 	// resampled from the image's colour channels (computeScales) instead of the image
-	// being resized first.
+	// being resized first. pool (optional, outliving the pyramid): compute() splits its
+	// colour rows and rectangles over it, and prepare() may run on each of its threads
+	// at once for different levels (one scratch set per thread).
 	Status init(const ModelParams &params, int maxWidth, int maxHeight,
-		    const kernels::KernelTable &k = kernels::bestKernels(), double upscale = 1.0);
+		    const kernels::KernelTable &k = kernels::bestKernels(), double upscale = 1.0,
+		    ThreadPool *pool = nullptr);
+	// Threads that may prepare() levels at once (the pool's size, or 1).
+	int workers() const { return int(scratch_.size()); }
 
 	// The one way channels get computed. A frame starts with beginFrame(); each compute()
 	// then computes what `demand` needs that the frame has not computed yet: colour
@@ -99,7 +108,9 @@ public:
 	// Level i smoothed and padded for the classifier (approximated first if need be):
 	// all that compute() prepared of it (rects null), or only these rectangles (cells
 	// before padding, each inside what was demanded); everything outside is stale.
-	LevelChannels prepare(int i, const LevelRect *rects = nullptr, int count = 0);
+	// worker (0 .. workers()-1): whose scratch holds the result; calls with different
+	// workers may run at once (between compute() calls), for different levels.
+	LevelChannels prepare(int i, const LevelRect *rects = nullptr, int count = 0, int worker = 0);
 
 	ptrdiff_t rowStride() const { return rowStride_; }
 	ptrdiff_t planeStride() const { return planeStride_; }
@@ -110,10 +121,26 @@ public:
 	int computedCount = 0;
 	// Rectangles computed as such since init (tests, tuning).
 	long rectsComputed = 0;
-	// Time spent on this frame in compute() and prepare(), for FrameStats.
-	double msChannels = 0, msApprox = 0, msSmooth = 0;
+	// Time spent on this frame in compute(), and in prepare() summed over the threads.
+	double msChannels = 0;
+	double msApprox() const;
+	double msSmooth() const;
 
 private:
+	// What one thread writes while computing a rectangle or preparing a level.
+	struct Scratch {
+		ChannelComputer channels;
+		PlaneBuffer<uint16_t> levelLuv[3]; // image resampled to one computed scale
+		PlaneBuffer<uint16_t> resampleTmp;
+		PlaneBuffer<uint16_t> approx;      // channels of one approximated level (or rectangle)
+		PlaneBuffer<uint16_t> levelBuf;    // smoothed and padded level for the classifier
+		PlaneBuffer<uint8_t> strip;        // RGB rows of a non-RGB8 frame
+		std::vector<kernels::ResampleTap> xTaps, yTaps, yTapsGain, yTapsBand;
+		std::vector<uint32_t> rowTmp;
+		double msApprox = 0, msSmooth = 0;
+	};
+	Status allocateScratch(Scratch &s, int luvW, int luvH, int maxWidth);
+
 	// Full-width bands of every level (levelRows: one per level, rows before padding;
 	// null: whole levels): the frame's colour and computed levels there, from scratch.
 	Status computeBands(FrameInput &input, const CellRange *levelRows);
@@ -121,7 +148,7 @@ private:
 	Status computeRects(FrameInput &input, const int *levels, const LevelRect *rects, int count);
 	// Level i smoothed and padded in rows `only` and columns `onlyCols` of what was
 	// computed (null: all of it).
-	LevelChannels prepareRect(int i, const CellRange *only, const CellRange *onlyCols);
+	LevelChannels prepareRect(int i, const CellRange *only, const CellRange *onlyCols, Scratch &s);
 
 	// The rows each stage must produce for the bands the classifier needs.
 	struct LevelRows {
@@ -135,7 +162,7 @@ private:
 	// of one size sharing xTaps; yTaps[p] holds at most kMaxTapSets distinct pointers.
 	void resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *dst, int planes,
 			  const kernels::ResampleTap *const *yTaps, const CellRange &rows,
-			  const kernels::ResampleTap *xTaps, const CellRange *cols = nullptr);
+			  const kernels::ResampleTap *xTaps, Scratch &s, const CellRange *cols = nullptr);
 	static constexpr int kMaxTapSets = 3; // the channel types' gains
 
 	// Resampling taps of level i: across (kTapsX) and down (kTapsY, the first channel
@@ -147,26 +174,31 @@ private:
 	// Builds every level's taps for maximum-size frames (setup time); false if some
 	// computed level cannot be resampled in one step.
 	bool buildTapCache();
-	// Taps for the current frame: cached for maximum-size frames, else built now into a
-	// scratch buffer (valid until the next call of the same kind). nullptr: the ratio is
-	// beyond the resampler.
-	const kernels::ResampleTap *levelTaps(int i, int kind);
-	// Channels of computed level i in rectangle r (cells), exactly, from `input`.
-	Status computeRect(FrameInput &input, int i, const LevelRect &r);
+	// Taps for the current frame: cached for maximum-size frames, else built now into
+	// the scratch's buffer (valid until its next call of the same kind). nullptr: the
+	// ratio is beyond the resampler.
+	const kernels::ResampleTap *levelTaps(int i, int kind, Scratch &s);
+	// Channels of computed level i in rectangle r (cells), exactly, from `input`; the
+	// colour rows it reads must be converted already (colourRows()).
+	Status computeRect(FrameInput &input, int i, const LevelRect &r, Scratch &s);
+	// The whole image's colour rows that computeRect(i, r) reads.
+	CellRange colourRows(int i, const LevelRect &r);
 	// The colour rows `chan` of computed level i's image, in columns `chanCols`: the
-	// whole image's (converted if need be), or resampled from them into levelLuv_.
+	// whole image's (converted if need be), or resampled from them into s.levelLuv.
 	Status levelColour(FrameInput &input, int i, const CellRange &chan, const CellRange &chanCols,
-			   Plane<uint16_t> in[3]);
+			   Plane<uint16_t> in[3], Scratch &s);
+	// The whole image's LUV rows not converted yet this frame (split over the pool).
 	void convertLuvRows(FrameInput &input, CellRange rows);
 	void approximate(int i, const CellRange &rows, const CellRange &cols,
-			 Plane<uint16_t> out[kChannelCount]);
+			 Plane<uint16_t> out[kChannelCount], Scratch &s);
 	void realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount]);
 
 	ModelParams params_;
 	double upscale_ = 1.0;
 	const kernels::KernelTable *k_ = nullptr;
 	kernels::LuvTables luvTables_;
-	ChannelComputer channels_;
+	ThreadPool *pool_ = nullptr;
+	std::vector<std::unique_ptr<Scratch>> scratch_; // one per thread of the pool
 	ScaleList scales_;
 	LevelRows rows_[kMaxLevels];
 	// computeRects(): this frame's computed rectangles of each computed level (exact, so
@@ -176,6 +208,14 @@ private:
 	int doneNext_[kMaxLevels] = {};
 	LevelRect needRects_[kMaxLevels][kMaxRects];
 	int needCount_[kMaxLevels] = {};
+	// computeRects(): the rectangles still to compute (level, index into needRects_),
+	// largest first, and each one's outcome.
+	struct RectTask {
+		int level, index;
+		long cells;
+	};
+	RectTask tasks_[kMaxLevels * kMaxRects];
+	bool taskFailed_[kMaxLevels * kMaxRects];
 	CellRange fullRows_; // rows of the whole-image LUV planes the levels read
 	int halfLevel_ = -1; // the computed level at scale 1/2, source of smaller octaves
 	int frameDemands_ = 0; // compute() calls since beginFrame()
@@ -190,9 +230,6 @@ private:
 
 	PlaneBuffer<uint16_t> luv_[3];      // whole image in LUV
 	PlaneBuffer<uint16_t> halfLuv_[3];  // the image at scale 1/2 (source of smaller octaves)
-	PlaneBuffer<uint16_t> levelLuv_[3]; // image resampled to one computed scale
-	PlaneBuffer<uint16_t> resampleTmp_;
-	std::vector<kernels::ResampleTap> xTaps_, yTaps_, yTapsGain_, yTapsBand_;
 	std::vector<kernels::ResampleTap> tapStore_; // buildTapCache()
 	static constexpr size_t kNoTaps = ~size_t(0);
 	size_t tapOffset_[kMaxLevels][kTapKinds];
@@ -201,9 +238,6 @@ private:
 	// Raw (unsmoothed, unpadded) channels of every computed level, back to back.
 	std::vector<uint16_t> computedStore_;
 	size_t realOffset_[kMaxLevels] = {};
-	PlaneBuffer<uint16_t> approx_;     // channels of one approximated level
-	std::vector<uint16_t> levelBuf_;   // smoothed and padded level for the classifier
-	std::vector<uint32_t> rowTmp_;
 	ptrdiff_t rowStride_ = 0, planeStride_ = 0;
 	int maxLevelH_ = 0, maxLevelW_ = 0;
 };

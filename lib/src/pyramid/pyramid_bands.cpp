@@ -25,7 +25,7 @@ void Pyramid::planRows(const CellRange *levelRows, int width, int height)
 		r.raw.add(raw);
 		if (!l.computed && !raw.empty()) {
 			// Which source rows the taps read does not depend on their gain.
-			const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
+			const kernels::ResampleTap *taps = levelTaps(i, kTapsY, *scratch_[0]);
 			if (taps)
 				rows_[l.source].raw.add(sourceRows(taps, raw));
 		}
@@ -57,7 +57,7 @@ void Pyramid::planRows(const CellRange *levelRows, int width, int height)
 			continue;
 		}
 		const bool fromHalf = halfLevel_ >= 0 && i > halfLevel_;
-		const kernels::ResampleTap *taps = levelTaps(i, kTapsY);
+		const kernels::ResampleTap *taps = levelTaps(i, kTapsY, *scratch_[0]);
 		if (!taps)
 			continue; // computeBands() reports it
 		const CellRange src = sourceRows(taps, r.luv);
@@ -97,6 +97,7 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 
 	// Computed levels, from the largest: each is resampled from the whole image, or
 	// from the half-size image once that exists (as the toolbox does).
+	Scratch &s = *scratch_[0];
 	Plane<uint16_t> source[3] = { luv[0], luv[1], luv[2] };
 	size_t offset = 0;
 	computedCount = 0;
@@ -121,16 +122,16 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 			for (int c = 0; c < 3; c++)
 				in[c] = luv[c];
 		} else {
-			if (!levelLuv_[0].fits(w1, h1) || (isHalf && !halfLuv_[0].fits(w1, h1)))
+			if (!s.levelLuv[0].fits(w1, h1) || (isHalf && !halfLuv_[0].fits(w1, h1)))
 				return Status::error(ErrorCode::ImageTooLarge, "level %d does not fit", i);
-			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
-			const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY) : nullptr;
+			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX, s);
+			const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY, s) : nullptr;
 			if (!yTaps)
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 			const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
 			for (int c = 0; c < 3; c++)
-				in[c] = isHalf ? halfLuv_[c].view(w1, h1) : levelLuv_[c].view(w1, h1);
-			resampleRows(source, in, 3, yTapsOf, r.luv, xTaps);
+				in[c] = isHalf ? halfLuv_[c].view(w1, h1) : s.levelLuv[c].view(w1, h1);
+			resampleRows(source, in, 3, yTapsOf, r.luv, xTaps, s);
 			if (isHalf)
 				for (int c = 0; c < 3; c++)
 					source[c] = in[c];
@@ -144,12 +145,12 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 		planesAt(computedStore_.data() + offset - need, l.width, l.height, out);
 		for (int c = 0; c < kChannelCount; c++)
 			out[c].data = out[c].row(r.chan.begin / 4);
-		channels_.compute(band, w1, r.chan.size(), out);
+		s.channels.compute(band, w1, r.chan.size(), out);
 		computedCount++;
 	}
 	msChannels = msSince(t0);
-	msApprox = 0;
-	msSmooth = 0;
+	for (auto &each : scratch_)
+		each->msApprox = each->msSmooth = 0;
 	return Status::success();
 }
 
@@ -158,26 +159,42 @@ void Pyramid::convertLuvRows(FrameInput &input, CellRange rows)
 	rows = rows.clipped(height_);
 	if (rows.empty() || fullRows_.contains(rows))
 		return;
-	Plane<uint16_t> luv[3];
-	for (int c = 0; c < 3; c++)
-		luv[c] = luv_[c].view(width_, height_);
-	// The rows above and below those converted, a strip of RGB rows at a time (the
-	// whole band at once when the frame is RGB8 already); strips start on even rows
-	// (4:2:0 chroma).
+	// The rows above and below those converted, in chunks of whole strips (the whole
+	// part at once when the frame is RGB8 already and there is one thread); chunks start
+	// on even rows (4:2:0 chroma). Each chunk writes only its own rows.
 	const CellRange parts[2] = { fullRows_.empty() ? rows : CellRange{ rows.begin, fullRows_.begin },
 				   fullRows_.empty() ? CellRange() : CellRange{ fullRows_.end, rows.end } };
 	const int strip = input.stripRows();
-	for (const CellRange &part : parts) {
-		if (part.empty())
-			continue;
-		for (int y0 = part.begin & ~1; y0 < part.end; y0 += strip) {
+	const int threads = workers();
+	int total = 0;
+	for (const CellRange &part : parts)
+		total += std::max(0, part.size());
+	// Several chunks per thread, so that a loaded core does not hold the others up; at
+	// most about 120 per part, even (4:2:0) and whole strips.
+	int chunk = threads == 1 ? std::max(total, 2) : std::max(16, total / (4 * threads));
+	chunk = (std::max(chunk, total / 120 + 2) + 1) & ~1;
+	if (strip < chunk)
+		chunk = (chunk + strip - 1) / strip * strip;
+	CellRange chunks[256];
+	int count = 0;
+	for (const CellRange &part : parts)
+		for (int y0 = part.begin & ~1; !part.empty() && y0 < part.end; y0 += chunk)
+			chunks[count++] = CellRange{ y0, std::min(part.end, y0 + chunk) };
+	auto one = [&](int t, int worker) {
+		Plane<uint16_t> luv[3];
+		for (int c = 0; c < 3; c++)
+			luv[c] = luv_[c].view(width_, height_);
+		uint8_t *scratch = scratch_[size_t(worker)]->strip.data();
+		const CellRange &part = chunks[t];
+		for (int y0 = part.begin; y0 < part.end; y0 += strip) {
 			const int n = std::min(strip, part.end - y0);
 			ptrdiff_t stride;
-			const uint8_t *rgb = input.rows(y0, n, stride);
+			const uint8_t *rgb = input.rows(y0, n, stride, scratch);
 			k_->rgbToLuv(luvTables_, rgb, stride, width_, n, luv[0].row(y0), luv[1].row(y0),
 				     luv[2].row(y0), luv[0].stride);
 		}
-	}
+	};
+	forEachTask(pool_, count, one);
 	fullRows_.add(rows);
 }
 

@@ -18,26 +18,26 @@ void Pyramid::realLevelPlanes(int i, Plane<uint16_t> out[kChannelCount])
 }
 
 void Pyramid::approximate(int i, const CellRange &rows, const CellRange &cols,
-			  Plane<uint16_t> out[kChannelCount])
+			  Plane<uint16_t> out[kChannelCount], Scratch &s)
 {
 	const PyramidLevel &l = scales_.levels[i];
 	Plane<uint16_t> src[kChannelCount];
 	realLevelPlanes(l.source, src);
-	planesAt(approx_.data(), l.width, l.height, out);
-	const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
+	planesAt(s.approx.data(), l.width, l.height, out);
+	const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX, s);
 	// Channel types: colour, magnitude, orientations; each has its power-law gain.
 	const int typeOf[kChannelCount] = { 0, 0, 0, 1, 2, 2, 2, 2, 2, 2 };
 	const kernels::ResampleTap *yTaps[kChannelCount];
 	for (int c = 0; c < kChannelCount; c++) {
-		yTaps[c] = c > 0 && typeOf[c] == typeOf[c - 1] ? yTaps[c - 1] : levelTaps(i, kTapsY + typeOf[c]);
+		yTaps[c] = c > 0 && typeOf[c] == typeOf[c - 1] ? yTaps[c - 1] : levelTaps(i, kTapsY + typeOf[c], s);
 		if (!yTaps[c])
 			return;
 	}
 	if (xTaps)
-		resampleRows(src, out, kChannelCount, yTaps, rows, xTaps, &cols);
+		resampleRows(src, out, kChannelCount, yTaps, rows, xTaps, s, &cols);
 }
 
-LevelChannels Pyramid::prepareRect(int i, const CellRange *only, const CellRange *onlyCols)
+LevelChannels Pyramid::prepareRect(int i, const CellRange *only, const CellRange *onlyCols, Scratch &s)
 {
 	const PyramidLevel &l = scales_.levels[i];
 	const int reach = params_.pyramidSmooth > 0 ? 1 : 0;
@@ -59,22 +59,22 @@ LevelChannels Pyramid::prepareRect(int i, const CellRange *only, const CellRange
 		realLevelPlanes(i, raw);
 	} else {
 		const auto t0 = StageClock::now();
-		approximate(i, band, cols, raw);
-		msApprox += msSince(t0);
+		approximate(i, band, cols, raw, s);
+		s.msApprox += msSince(t0);
 	}
 
 	const auto t0 = StageClock::now();
 	const int w = l.width, h = l.height;
 	const int pw = w + 2 * padW_, ph = h + 2 * padH_;
 	for (int c = 0; c < kChannelCount; c++) {
-		uint16_t *plane = levelBuf_.data() + c * planeStride_;
+		uint16_t *plane = s.levelBuf.data() + c * planeStride_;
 		uint16_t *inner = plane + padH_ * rowStride_ + padW_;
 		if (band.empty() || cols.empty())
 			break;
 		if (params_.pyramidSmooth > 0)
 			k_->smoothTri1(raw[c].row(band.begin) + cols.begin, raw[c].stride,
 				       inner + band.begin * rowStride_ + cols.begin, rowStride_,
-				       cols.size(), band.size(), rowTmp_.data());
+				       cols.size(), band.size(), s.rowTmp.data());
 		else
 			for (int y = band.begin; y < band.end; y++)
 				std::memcpy(inner + y * rowStride_ + cols.begin, raw[c].row(y) + cols.begin,
@@ -106,10 +106,10 @@ LevelChannels Pyramid::prepareRect(int i, const CellRange *only, const CellRange
 			}
 		}
 	}
-	msSmooth += msSince(t0);
+	s.msSmooth += msSince(t0);
 
 	LevelChannels out;
-	out.data = levelBuf_.data();
+	out.data = s.levelBuf.data();
 	out.paddedHeight = ph;
 	out.paddedWidth = pw;
 	out.rowStride = rowStride_;

@@ -30,11 +30,12 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 		// prepare() checks its rows against these.
 		rows_[i].raw.add(raw.rows);
 		if (!l.computed) {
-			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
+			Scratch &s = *scratch_[0];
+			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX, s);
 			if (!xTaps)
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 			const CellRange cols = sourceRows(xTaps, raw.cols);
-			const kernels::ResampleTap *yTaps = levelTaps(i, kTapsY);
+			const kernels::ResampleTap *yTaps = levelTaps(i, kTapsY, s);
 			if (!yTaps)
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 			raw = LevelRect{ sourceRows(yTaps, raw.rows), cols };
@@ -43,6 +44,9 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 		addMerged(needRects_[c], needCount_[c], kMaxRects, raw, gap);
 	}
 	const auto t0 = StageClock::now();
+	// The rectangles not computed yet this frame, and the colour rows they read.
+	int tasks = 0;
+	CellRange colour;
 	for (int i = 0; i < scales_.count; i++)
 		for (int k = 0; k < needCount_[i]; k++) {
 			const LevelRect &r = needRects_[i][k];
@@ -51,15 +55,65 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 				done = doneRects_[i][d].contains(r);
 			if (done)
 				continue;
-			const Status st = computeRect(input, i, r);
-			if (!st.ok())
-				return st;
+			const CellRange rows = colourRows(i, r);
+			if (rows.empty() && !r.empty())
+				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+			colour.add(rows);
+			tasks_[tasks++] = RectTask{ i, k, long(r.rows.size()) * r.cols.size() };
 		}
+	convertLuvRows(input, colour);
+	// Largest first, so that the threads finish together; each rectangle is computed
+	// into its own cells of the store, the same on any thread.
+	// (std::sort: stable_sort may allocate.)
+	std::sort(tasks_, tasks_ + tasks, [](const RectTask &a, const RectTask &b) {
+		if (a.cells != b.cells)
+			return a.cells > b.cells;
+		return a.level != b.level ? a.level < b.level : a.index < b.index;
+	});
+	auto one = [&](int t, int worker) {
+		const RectTask &task = tasks_[t];
+		taskFailed_[t] = !computeRect(input, task.level, needRects_[task.level][task.index],
+					      *scratch_[size_t(worker)]).ok();
+	};
+	forEachTask(pool_, tasks, one);
+	for (int t = 0; t < tasks; t++)
+		if (taskFailed_[t])
+			return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+	// Remember them, in the order of the levels (the oldest is forgotten when the list
+	// is full: computed again if asked for again).
+	std::sort(tasks_, tasks_ + tasks, [](const RectTask &a, const RectTask &b) {
+		return a.level != b.level ? a.level < b.level : a.index < b.index;
+	});
+	for (int t = 0; t < tasks; t++) {
+		const int i = tasks_[t].level;
+		const LevelRect &r = needRects_[i][tasks_[t].index];
+		if (doneCount_[i] == 0 && rows_[i].chan.empty())
+			computedCount++;
+		if (doneCount_[i] < kMaxRects) {
+			doneRects_[i][doneCount_[i]++] = r;
+		} else {
+			doneRects_[i][doneNext_[i]] = r;
+			doneNext_[i] = (doneNext_[i] + 1) % kMaxRects;
+		}
+		rectsComputed++;
+	}
 	msChannels += msSince(t0);
 	return Status::success();
 }
 
-Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r)
+CellRange Pyramid::colourRows(int i, const LevelRect &r)
+{
+	const PyramidLevel &l = scales_.levels[i];
+	const int w1 = l.width * 4, h1 = l.height * 4;
+	const CellRange chan = CellRange{ 4 * r.rows.begin - channelMargin_, 4 * r.rows.end + channelMargin_ }
+				     .clipped(h1);
+	if (w1 == width_ && h1 == height_)
+		return chan;
+	const kernels::ResampleTap *yTaps = levelTaps(i, kTapsY, *scratch_[0]);
+	return yTaps ? sourceRows(yTaps, chan) : CellRange();
+}
+
+Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r, Scratch &s)
 {
 	const PyramidLevel &l = scales_.levels[i];
 	const int w1 = l.width * 4, h1 = l.height * 4;
@@ -70,15 +124,15 @@ Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r)
 	const CellRange chanCols = CellRange{ 4 * r.cols.begin - channelMargin_, 4 * r.cols.end + channelMargin_ }
 					 .clipped(w1);
 	Plane<uint16_t> in[3];
-	const Status st = levelColour(input, i, chan, chanCols, in);
+	const Status st = levelColour(input, i, chan, chanCols, in, s);
 	if (!st.ok())
 		return st;
 	Plane<uint16_t> scratch[kChannelCount];
-	planesAt(approx_.data(), chanCols.size() / 4, chan.size() / 4, scratch);
+	planesAt(s.approx.data(), chanCols.size() / 4, chan.size() / 4, scratch);
 	Plane<const uint16_t> block[3];
 	for (int c = 0; c < 3; c++)
 		block[c] = { in[c].row(chan.begin) + chanCols.begin, chanCols.size(), chan.size(), in[c].stride };
-	channels_.compute(block, chanCols.size(), chan.size(), scratch);
+	s.channels.compute(block, chanCols.size(), chan.size(), scratch);
 	Plane<uint16_t> out[kChannelCount];
 	realLevelPlanes(i, out);
 	const int dy = chan.begin / 4, dx = chanCols.begin / 4;
@@ -86,22 +140,11 @@ Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r)
 		for (int y = r.rows.begin; y < r.rows.end; y++)
 			std::memcpy(out[c].row(y) + r.cols.begin, scratch[c].row(y - dy) + (r.cols.begin - dx),
 				    sizeof(uint16_t) * r.cols.size());
-	// Remember it (the oldest is forgotten when the list is full: computed again if
-	// asked for again).
-	if (doneCount_[i] == 0 && rows_[i].chan.empty())
-		computedCount++;
-	if (doneCount_[i] < kMaxRects) {
-		doneRects_[i][doneCount_[i]++] = r;
-	} else {
-		doneRects_[i][doneNext_[i]] = r;
-		doneNext_[i] = (doneNext_[i] + 1) % kMaxRects;
-	}
-	rectsComputed++;
 	return Status::success();
 }
 
 Status Pyramid::levelColour(FrameInput &input, int i, const CellRange &chan, const CellRange &chanCols,
-			   Plane<uint16_t> in[3])
+			   Plane<uint16_t> in[3], Scratch &s)
 {
 	const PyramidLevel &l = scales_.levels[i];
 	const int w1 = l.width * 4, h1 = l.height * 4;
@@ -114,17 +157,17 @@ Status Pyramid::levelColour(FrameInput &input, int i, const CellRange &chan, con
 			in[c] = luv[c];
 		return Status::success();
 	}
-	const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX);
-	const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY) : nullptr;
+	const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX, s);
+	const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY, s) : nullptr;
 	if (!yTaps)
 		return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-	// The level's colour image is shared by the computed levels: resample these rows
-	// again from the whole image.
+	// The level's colour image is the thread's: resample these rows again from the
+	// whole image.
 	convertLuvRows(input, sourceRows(yTaps, chan));
 	for (int c = 0; c < 3; c++)
-		in[c] = levelLuv_[c].view(w1, h1);
+		in[c] = s.levelLuv[c].view(w1, h1);
 	const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
-	resampleRows(luv, in, 3, yTapsOf, chan, xTaps, &chanCols);
+	resampleRows(luv, in, 3, yTapsOf, chan, xTaps, s, &chanCols);
 	return Status::success();
 }
 

@@ -72,7 +72,7 @@ bool Pyramid::buildTapCache()
 	return true;
 }
 
-const kernels::ResampleTap *Pyramid::levelTaps(int i, int kind)
+const kernels::ResampleTap *Pyramid::levelTaps(int i, int kind, Scratch &s)
 {
 	if (tapsCached_ && width_ == maxWidth_ && height_ == maxHeight_) {
 		const size_t at = tapOffset_[i][kind];
@@ -82,21 +82,21 @@ const kernels::ResampleTap *Pyramid::levelTaps(int i, int kind)
 	double gain;
 	if (!tapSpec(scales_, width_, height_, i, kind, n, m, gain))
 		return nullptr;
-	kernels::ResampleTap *out = kind == kTapsX ? xTaps_.data() : kind == kTapsY ? yTaps_.data()
-										: yTapsGain_.data();
+	kernels::ResampleTap *out = kind == kTapsX ? s.xTaps.data() : kind == kTapsY ? s.yTaps.data()
+										: s.yTapsGain.data();
 	return kernels::buildResampleTaps(n, m, gain, out) ? out : nullptr;
 }
 
 void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *dst, int planes,
 			   const kernels::ResampleTap *const *yTaps, const CellRange &rows,
-			   const kernels::ResampleTap *xTaps, const CellRange *cols)
+			   const kernels::ResampleTap *xTaps, Scratch &s, const CellRange *cols)
 {
 	// The planes share their source rows (the channel types' gains scale the weights
 	// only), so one band of them serves every plane; each distinct yTaps is shifted once.
 	CellRange srcRows;
 	for (int p = 0; p < planes; p++)
 		srcRows.add(sourceRows(yTaps[p], rows));
-	const size_t bandTaps = yTapsBand_.size() / kMaxTapSets;
+	const size_t bandTaps = s.yTapsBand.size() / kMaxTapSets;
 	const kernels::ResampleTap *shiftedFrom[kMaxTapSets] = {};
 	int sets = 0;
 	kernels::PlaneJob jobs[kChannelCount];
@@ -106,7 +106,7 @@ void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *ds
 		int set = 0;
 		while (set < sets && shiftedFrom[set] != yTaps[p])
 			set++;
-		kernels::ResampleTap *band = yTapsBand_.data() + set * bandTaps;
+		kernels::ResampleTap *band = s.yTapsBand.data() + set * bandTaps;
 		if (set == sets) {
 			shiftTaps(yTaps[p], rows, srcRows.begin, band);
 			shiftedFrom[sets++] = yTaps[p];
@@ -114,7 +114,7 @@ void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *ds
 		jobs[p] = { src[p].row(srcRows.begin), src[p].stride, dst[p].row(rows.begin) + c.begin,
 			    dst[p].stride, band };
 	}
-	Plane<uint16_t> tmp = resampleTmp_.view(c.size(), srcRows.size());
+	Plane<uint16_t> tmp = s.resampleTmp.view(c.size(), srcRows.size());
 	k_->resamplePlanes(jobs, planes, src[0].width, srcRows.size(), c.size(), rows.size(),
 			   xTaps + c.begin, tmp.data, tmp.stride);
 }

@@ -12,9 +12,10 @@ namespace calped {
 Status CalibratedSearch::init(const CameraModel &camera, const ModelParams &params,
 			      const CalibratedSettings &settings, const WindowBoxes &boxes,
 			      int frameW, int frameH, int maxCandidates, Pyramid &pyramid,
-			      const Classifier &classifier, const StaticScene *scene)
+			      const Classifier &classifier, const StaticScene *scene, ThreadPool *pool)
 {
 	settings_ = settings;
+	pool_ = pool;
 	// The plan holds for one frame size: the configured maximum.
 	ScaleList scales;
 	Status st = pyramid.scalesFor(frameW, frameH, scales);
@@ -82,7 +83,8 @@ Status CalibratedSearch::init(const CameraModel &camera, const ModelParams &para
 		}
 		regions_.init(settings.maxDenseRegions, settings.denseRegionPersistence);
 		evaluated_.assign(plan_.gridSize(), 0);
-		frameList_.assign(plan_.largestLevelWindows() + 1, 0);
+		frameLists_.assign(size_t(pool ? pool->size() : 1),
+				   std::vector<uint32_t>(plan_.largestLevelWindows() + 1, 0));
 		order_.assign(size_t(maxCandidates), 0);
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory, "calibrated search buffers");
@@ -121,15 +123,25 @@ Status CalibratedSearch::run(FrameInput &input, Pyramid &pyramid, const Classifi
 			return st;
 	}
 	if (!settings_.sparseDense) {
-		// Every plausible window, in the plan's bands.
-		for (int i = 0; i < levels_; i++) {
-			if (!levelNeeded_[i])
-				continue;
-			const LevelChannels level = pyramid.prepare(i);
+		// Every plausible window, in the plan's bands, level after level on the threads.
+		int count = 0;
+		for (int i = 0; i < levels_; i++)
+			if (levelNeeded_[i])
+				passLevels_[count++] = i;
+		out.emptyLanes();
+		auto one = [&](int t, int worker) {
+			const int i = passLevels_[t];
+			LevelWork &work = work_[t];
+			const LevelChannels level = pyramid.prepare(i, nullptr, 0, worker);
 			const auto t0 = StageClock::now();
-			out.classify(classifier, pyramid.scales().levels[i], level, plan_.windows(i),
-				     plan_.windowCount(i), stats);
-			stats.msClassify += msSince(t0);
+			work.hits = out.classifyInLane(worker, classifier, pyramid.scales().levels[i], level,
+						       plan_.windows(i), plan_.windowCount(i));
+			work.msClassify = msSince(t0);
+		};
+		forEachTask(pool_, count, one);
+		for (int t = 0; t < count; t++) {
+			out.gather(&work_[t].hits, 1, stats);
+			stats.msClassify += work_[t].msClassify;
 			stats.levels++;
 		}
 		return Status::success();
@@ -170,63 +182,85 @@ Status CalibratedSearch::pass(FrameInput &input, Pyramid &pyramid, const Classif
 		if (!st.ok())
 			return st;
 	}
-	for (int i = 0; i < levels_; i++) {
-		if (!levelNeeded_[i])
-			continue;
-		const auto tList = StageClock::now();
-		size_t n = 0;
-		if (sparse) {
-			uint8_t *done = evaluated_.data() + plan_.gridFirst(i);
-			const uint32_t *list = sparseList_[i];
-			for (size_t k = 0; k < sparseCount_[i]; k++) {
-				done[size_t(list[k] >> 16) * plan_.cols(i) + (list[k] & 0xFFFF)] = 1;
-				frameList_[n++] = list[k];
-			}
-			stats.sparseWindows += n;
-		}
-		const size_t sparseN = n;
-		for (int r = firstRegion; r < regions_.count(); r++)
-			n = collectDense(i, regions_[r], n);
-		stats.denseWindows += n - sparseN;
-		stats.msCandidates += msSince(tList);
-		// Pass 1 classifies every needed level (the plausible windows' band is wider
-		// than the sparse grid's at its ends); pass 2 only those with new windows.
-		if (!sparse && n == 0)
-			continue;
-		classifyListed(i, n, pyramid, classifier, out, stats);
+	// Each needed level on some thread: its window list, preparation and classification
+	// write only its own outputs; the hits are gathered in level order.
+	int count = 0;
+	for (int i = 0; i < levels_; i++)
+		if (levelNeeded_[i])
+			passLevels_[count++] = i;
+	out.emptyLanes();
+	auto one = [&](int t, int worker) {
+		work_[t] = LevelWork();
+		passLevel(passLevels_[t], worker, pyramid, classifier, out, firstRegion, sparse, work_[t]);
+	};
+	forEachTask(pool_, count, one);
+	for (int t = 0; t < count; t++) {
+		const LevelWork &work = work_[t];
+		stats.sparseWindows += work.sparse;
+		stats.denseWindows += work.dense;
+		stats.msCandidates += work.msList;
+		stats.msClassify += work.msClassify;
+		if (work.classified)
+			out.gather(&work.hits, 1, stats);
 		if (sparse)
 			stats.levels++;
 	}
 	return Status::success();
 }
 
-void CalibratedSearch::classifyListed(int i, size_t n, Pyramid &pyramid,
-				      const Classifier &classifier, Candidates &out,
-				      FrameStats &stats)
+void CalibratedSearch::passLevel(int i, int worker, Pyramid &pyramid, const Classifier &classifier,
+				 Candidates &out, int firstRegion, bool sparse, LevelWork &work)
+{
+	const auto tList = StageClock::now();
+	uint32_t *list = frameLists_[size_t(worker)].data();
+	size_t n = 0;
+	if (sparse) {
+		uint8_t *done = evaluated_.data() + plan_.gridFirst(i);
+		const uint32_t *sparseList = sparseList_[i];
+		for (size_t k = 0; k < sparseCount_[i]; k++) {
+			done[size_t(sparseList[k] >> 16) * plan_.cols(i) + (sparseList[k] & 0xFFFF)] = 1;
+			list[n++] = sparseList[k];
+		}
+		work.sparse = n;
+	}
+	const size_t sparseN = n;
+	for (int r = firstRegion; r < regions_.count(); r++)
+		n = collectDense(i, regions_[r], list, n);
+	work.dense = n - sparseN;
+	work.msList = msSince(tList);
+	// Pass 1 classifies every needed level (the plausible windows' band is wider than
+	// the sparse grid's at its ends); pass 2 only those with new windows.
+	if (!sparse && n == 0)
+		return;
+	classifyListed(i, list, n, worker, pyramid, classifier, out, work);
+}
+
+void CalibratedSearch::classifyListed(int i, const uint32_t *list, size_t n, int worker,
+				      Pyramid &pyramid, const Classifier &classifier,
+				      Candidates &out, LevelWork &work)
 {
 	const PyramidLevel &level = pyramid.scales().levels[i];
+	LevelChannels channels;
 	if (rectsPerFrame_) {
 		// Level i prepared in each of the rectangles prepareRects() gave it (each window
 		// reads inside one of them; they are two cells apart, so the smoothing at the
 		// edge of one does not reach into another).
 		if (levelRectCount_[i] == 0)
 			return;
-		const LevelChannels channels = pyramid.prepare(i, levelRects_[i], levelRectCount_[i]);
-		const auto t0 = StageClock::now();
-		out.classify(classifier, level, channels, frameList_.data(), n, stats);
-		stats.msClassify += msSince(t0);
-		return;
+		channels = pyramid.prepare(i, levelRects_[i], levelRectCount_[i], worker);
+	} else {
+		// Level i prepared only in the rows and columns these windows read (of the
+		// plan's bands).
+		const LevelRect read{ plan_.rowsRead(i, list, n), plan_.colsRead(i, list, n) };
+		channels = pyramid.prepare(i, &read, 1, worker);
 	}
-	// Level i prepared only in the rows and columns these windows read (of the plan's
-	// bands).
-	const LevelRect read{ plan_.rowsRead(i, frameList_.data(), n), plan_.colsRead(i, frameList_.data(), n) };
-	const LevelChannels channels = pyramid.prepare(i, &read, 1);
 	const auto t0 = StageClock::now();
-	out.classify(classifier, level, channels, frameList_.data(), n, stats);
-	stats.msClassify += msSince(t0);
+	work.hits = out.classifyInLane(worker, classifier, level, channels, list, n);
+	work.classified = true;
+	work.msClassify = msSince(t0);
 }
 
-size_t CalibratedSearch::collectDense(int i, const DenseRegion &region, size_t n)
+size_t CalibratedSearch::collectDense(int i, const DenseRegion &region, uint32_t *list, size_t n)
 {
 	int r0, r1, c0, c1;
 	if (!plan_.windowsInside(i, region.x0, region.y0, region.x1, region.y1, r0, r1, c0, c1))
@@ -242,7 +276,7 @@ size_t CalibratedSearch::collectDense(int i, const DenseRegion &region, size_t n
 			if (done[k] || !plan_.plausible(i, r, c))
 				continue;
 			done[k] = 1;
-			frameList_[n++] = uint32_t(r) << 16 | uint32_t(c);
+			list[n++] = uint32_t(r) << 16 | uint32_t(c);
 		}
 	}
 	return n;

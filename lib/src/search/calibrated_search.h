@@ -32,7 +32,7 @@ public:
 	Status init(const CameraModel &camera, const ModelParams &params,
 		    const CalibratedSettings &settings, const WindowBoxes &boxes, int frameW,
 		    int frameH, int maxCandidates, Pyramid &pyramid, const Classifier &classifier,
-		    const StaticScene *scene);
+		    const StaticScene *scene, ThreadPool *pool = nullptr);
 
 	// Picks this frame's sparse windows (the static gate).
 	void beginFrame(FrameStats &stats);
@@ -58,11 +58,22 @@ private:
 	// pyramid computes what they need.
 	Status prepareRects(FrameInput &input, Pyramid &pyramid, FrameStats &stats,
 			    int firstRegion, bool sparse);
-	// Windows of level i inside region r not evaluated yet, appended to frameList_.
-	size_t collectDense(int i, const DenseRegion &r, size_t n);
-	// Level i prepared where the first n windows of frameList_ read, and classified.
-	void classifyListed(int i, size_t n, Pyramid &pyramid, const Classifier &classifier,
-			    Candidates &out, FrameStats &stats);
+	// Windows of level i inside region r not evaluated yet, appended to list.
+	size_t collectDense(int i, const DenseRegion &r, uint32_t *list, size_t n);
+	// What one level of a pass did, on whichever thread: its windows, its hits (in the
+	// thread's lane of the candidates) and its time.
+	struct LevelWork {
+		bool classified = false;
+		LevelHits hits;
+		uint64_t sparse = 0, dense = 0;
+		double msList = 0, msClassify = 0;
+	};
+	// Level i of a pass (its window list in the worker's own list), classified.
+	void passLevel(int i, int worker, Pyramid &pyramid, const Classifier &classifier,
+		       Candidates &out, int firstRegion, bool sparse, LevelWork &work);
+	// Level i prepared where the first n windows of `list` read, and classified.
+	void classifyListed(int i, const uint32_t *list, size_t n, int worker, Pyramid &pyramid,
+			    const Classifier &classifier, Candidates &out, LevelWork &work);
 
 	CalibratedSettings settings_;
 	CalibratedPlan plan_;
@@ -90,7 +101,10 @@ private:
 	size_t sparseCount_[kMaxLevels] = {};
 	DenseRegions regions_;
 	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
-	std::vector<uint32_t> frameList_;
+	ThreadPool *pool_ = nullptr;
+	std::vector<std::vector<uint32_t>> frameLists_; // a window list per thread
+	int passLevels_[kMaxLevels] = {};
+	LevelWork work_[kMaxLevels];
 	std::vector<int> order_; // candidates best first, for new regions
 };
 

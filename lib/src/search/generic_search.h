@@ -11,7 +11,9 @@
 
 namespace calped {
 
+// The whole pyramid, every window; the levels are prepared and classified on the pool's
+// threads (null: this one), their hits gathered in level order.
 Status searchEveryWindow(FrameInput &input, Pyramid &pyramid, const Classifier &classifier, Candidates &out,
-		       FrameStats &stats);
+		       FrameStats &stats, ThreadPool *pool = nullptr);
 
 } // namespace calped
