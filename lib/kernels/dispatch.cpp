@@ -67,6 +67,8 @@ const KernelTable &avx2Kernels()
 		t.normalizeMag = normalizeMag_avx2;
 		t.gradHist4 = gradHist4_avx2;
 		t.shrink4 = shrink4_avx2;
+		t.scanDepth2 = scanDepth2_avx2;
+		t.scanDepth2List = scanDepth2List_avx2;
 		return t;
 	}();
 	return table;
@@ -102,6 +104,8 @@ const KernelTable &neonKernels()
 		t.normalizeMag = normalizeMag_neon;
 		t.shrink4 = shrink4_neon;
 		t.gradHist4 = gradHist4_neon;
+		t.scanDepth2 = scanDepth2_neon;
+		t.scanDepth2List = scanDepth2List_neon;
 		return t;
 	}();
 	return table;

@@ -241,6 +241,19 @@ uint64_t scanDepth2List_ref(const uint16_t *chns, ptrdiff_t rowStride, const uin
 uint64_t scanTreesList_ref(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
 			   size_t count, int step, const TreeNode *nodes, int nTrees,
 			   int nodesPerTree, int32_t cascThr, WindowHit *hits, uint64_t capacity);
+// Depth-2 trees several windows at a time (trees_batch.h): eight with AVX2, four with NEON.
+uint64_t scanDepth2_avx2(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
+			 const Depth2Tree *trees, int nTrees, int32_t cascThr, WindowHit *hits,
+			 uint64_t capacity);
+uint64_t scanDepth2List_avx2(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
+			     size_t count, int step, const Depth2Tree *trees, int nTrees,
+			     int32_t cascThr, WindowHit *hits, uint64_t capacity);
+uint64_t scanDepth2_neon(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
+			 const Depth2Tree *trees, int nTrees, int32_t cascThr, WindowHit *hits,
+			 uint64_t capacity);
+uint64_t scanDepth2List_neon(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
+			     size_t count, int step, const Depth2Tree *trees, int nTrees,
+			     int32_t cascThr, WindowHit *hits, uint64_t capacity);
 
 // AVX2 builds of the portable optimised kernels (x86/portable_avx2.cpp), and RGB8
 // resampling at any ratio in 32-bit lanes (x86/resample_rgb8_avx2.cpp).
