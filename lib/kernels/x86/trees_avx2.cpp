@@ -41,11 +41,9 @@ inline __m256i features8(const int *words, __m256i idx)
 	return _mm256_and_si256(_mm256_srlv_epi32(w, shift), _mm256_set1_epi32(0xFFFF));
 }
 
-// f >= thr for features f in [0, 65535] as f > thr' (AVX2 compares only "greater").
-inline __m256i thrMinusOne(int32_t thr)
-{
-	return _mm256_set1_epi32((thr > 0 ? thr : 0) - 1);
-}
+// A tree's fields as eight lanes (off[0..2], thr[0..2], leaf[0..1]) and its four leaves,
+// for picking per lane with permutes instead of blends of broadcasts.
+static_assert(sizeof(Depth2Tree) == 40, "Depth2Tree: off[3], thr[3], leaf[4] packed");
 
 struct Avx2Walk {
 	void operator()(const uint16_t *chns, const int32_t *base, int n, const Depth2Tree *trees,
@@ -57,26 +55,32 @@ struct Avx2Walk {
 			_mm256_loadu_si256(reinterpret_cast<const __m256i *>(base)),
 			_mm256_set1_epi32(int32_t((a & 2) >> 1)));
 		const __m256i thr = _mm256_set1_epi32(cascThr);
+		const __m256i two = _mm256_set1_epi32(2), three = _mm256_set1_epi32(3),
+			      five = _mm256_set1_epi32(5);
 		__m256i running = _mm256_cmpgt_epi32(_mm256_set1_epi32(n),
 						     _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
 		__m256i h = _mm256_setzero_si256();
 		int live = n, t = 0;
 		for (; t < nTrees && live > scalarBelow; t++) {
 			const Depth2Tree &tr = trees[t];
+			const __m256i fields = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(&tr));
+			const __m256i leaves = _mm256_castsi128_si256(
+				_mm_loadu_si128(reinterpret_cast<const __m128i *>(tr.leaf)));
+			// Masks of "feature < threshold" (all ones): f >= thr is their complement, and
+			// f < thr needs no care for thresholds outside the features' range.
 			const __m256i f0 =
 				features8(words, _mm256_add_epi32(b, _mm256_set1_epi32(int32_t(tr.off[0]))));
-			const __m256i right = _mm256_cmpgt_epi32(f0, thrMinusOne(tr.thr[0]));
-			const __m256i off = _mm256_blendv_epi8(_mm256_set1_epi32(int32_t(tr.off[1])),
-							       _mm256_set1_epi32(int32_t(tr.off[2])), right);
-			const __m256i thr1 =
-				_mm256_blendv_epi8(thrMinusOne(tr.thr[1]), thrMinusOne(tr.thr[2]), right);
+			const __m256i left = _mm256_cmpgt_epi32(_mm256_set1_epi32(tr.thr[0]), f0);
+			// Second node: node 1 (fields off[1], thr[1]: 1 and 4) when left (-1), else node
+			// 2 (fields 2 and 5).
+			const __m256i off = _mm256_permutevar8x32_epi32(fields, _mm256_add_epi32(two, left));
+			const __m256i thr1 = _mm256_permutevar8x32_epi32(fields, _mm256_add_epi32(five, left));
 			const __m256i f1 = features8(words, _mm256_add_epi32(b, off));
-			const __m256i second = _mm256_cmpgt_epi32(f1, thr1);
-			const __m256i left = _mm256_blendv_epi8(_mm256_set1_epi32(tr.leaf[0]),
-								_mm256_set1_epi32(tr.leaf[1]), second);
-			const __m256i rightLeaf = _mm256_blendv_epi8(_mm256_set1_epi32(tr.leaf[2]),
-								     _mm256_set1_epi32(tr.leaf[3]), second);
-			const __m256i leaf = _mm256_blendv_epi8(left, rightLeaf, right);
+			const __m256i left1 = _mm256_cmpgt_epi32(thr1, f1);
+			// Leaf 3 + 2 left + left1: 0 left-left, 1 left-right, 2 right-left, 3 right-right.
+			const __m256i leafIndex =
+				_mm256_add_epi32(three, _mm256_add_epi32(_mm256_add_epi32(left, left), left1));
+			const __m256i leaf = _mm256_permutevar8x32_epi32(leaves, leafIndex);
 			h = _mm256_add_epi32(h, _mm256_and_si256(leaf, running));
 			running = _mm256_and_si256(running, _mm256_cmpgt_epi32(h, thr));
 			live = kBitCounts.n[_mm256_movemask_ps(_mm256_castsi256_ps(running))];
