@@ -177,6 +177,16 @@ const ConvertKernels &avx2ConvertKernels()
 }
 #endif
 
+#if CALPED_HAVE_NEON
+const ConvertKernels &neonConvertKernels()
+{
+	static const ConvertKernels table = {
+		"neon", bgr8ToRgb8_neon, gray8ToRgb8_neon, yuv420ToRgb8_neon, yuyvToRgb8_neon, bayerToRgb8_neon,
+	};
+	return table;
+}
+#endif
+
 } // namespace
 
 const ConvertKernels &bestConvertKernels()
@@ -184,6 +194,9 @@ const ConvertKernels &bestConvertKernels()
 #if CALPED_HAVE_AVX2
 	if (cpuHasAvx2())
 		return avx2ConvertKernels();
+#endif
+#if CALPED_HAVE_NEON
+	return neonConvertKernels();
 #endif
 	return portableConvertKernels();
 }
@@ -200,6 +213,9 @@ int availableConvertKernels(const ConvertKernels *out[], int capacity)
 #if CALPED_HAVE_AVX2
 	if (cpuHasAvx2())
 		add(avx2ConvertKernels());
+#endif
+#if CALPED_HAVE_NEON
+	add(neonConvertKernels());
 #endif
 	return n;
 }

@@ -377,6 +377,13 @@ void bayerToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_
 void bayerToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 void bayerToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 
+// NEON versions (arm/convert_neon.cpp), sixteen pixels at a time.
+void bgr8ToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void gray8ToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuv420ToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuyvToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void bayerToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+
 // The conversion kernels one pipeline uses (a table of their own, so the main
 // KernelTable and its ISA-specific tables stay untouched).
 struct ConvertKernels {
