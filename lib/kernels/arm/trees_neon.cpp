@@ -14,7 +14,7 @@ namespace kernels {
 
 namespace {
 
-// Below this many running lanes a batch is finished by the scalar loop.
+// With this many running lanes or fewer a batch is finished by the scalar loop.
 constexpr int kScalarBelow = 1;
 
 CALPED_NEON_INLINE int lanesSet(uint32x4_t mask)

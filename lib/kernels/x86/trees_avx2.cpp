@@ -14,9 +14,9 @@ namespace kernels {
 
 namespace {
 
-// Below this many running lanes a batch is finished by the scalar loop: a step of the
-// eight-lane walk costs about as much as two scalar trees (callgrind,
-// docs/benchmarks.md).
+// With this many running lanes or fewer a batch is finished by the scalar loop: a step of the
+// eight-lane walk costs about as much as three scalar trees (callgrind: 1 and 2 within 1%
+// of each other, 3 and 4 worse; docs/benchmarks.md).
 constexpr int kScalarBelow = 2;
 
 // Set bits of an eight-bit mask (AVX2 does not imply the popcnt instruction).
