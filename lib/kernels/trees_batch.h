@@ -42,16 +42,18 @@ inline int32_t finishDepth2(const uint16_t *w, const Depth2Tree *trees, int t, i
 	return h;
 }
 
-// Windows in the reference's order: a grid (columns outer, rows inner) or a list of
-// row << 16 | column.
+// Windows in the reference's order, read one after another: a grid (columns outer, rows
+// inner) or a list of row << 16 | column.
 struct GridWindows {
 	int rows, cols, step;
 	ptrdiff_t rowStride;
+	int r = 0, c = 0; // the next window
 	uint64_t count() const { return uint64_t(rows) * cols; }
-	void at(uint64_t i, int &r, int &c) const
+	void next(int &row, int &col)
 	{
-		c = int(i / uint64_t(rows));
-		r = int(i % uint64_t(rows));
+		row = r, col = c;
+		if (++r == rows)
+			r = 0, c++;
 	}
 };
 struct ListWindows {
@@ -59,11 +61,13 @@ struct ListWindows {
 	size_t n;
 	int step;
 	ptrdiff_t rowStride;
+	size_t i = 0; // the next window
 	uint64_t count() const { return n; }
-	void at(uint64_t i, int &r, int &c) const
+	void next(int &row, int &col)
 	{
-		r = int(windows[i] >> 16);
-		c = int(windows[i] & 0xFFFF);
+		row = int(windows[i] >> 16);
+		col = int(windows[i] & 0xFFFF);
+		i++;
 	}
 };
 
@@ -73,7 +77,7 @@ struct ListWindows {
 // offset must fit 32 bits unsigned (a level buffer under 8 GB). Windows further out take
 // the scalar loop.
 template <int Lanes, class Walk, class Windows>
-uint64_t scanDepth2Batched(const uint16_t *chns, const Windows &win, const Depth2Tree *trees,
+uint64_t scanDepth2Batched(const uint16_t *chns, Windows win, const Depth2Tree *trees,
 			   int nTrees, int32_t cascThr, int scalarBelow, WindowHit *hits,
 			   uint64_t capacity, Walk walk)
 {
@@ -89,7 +93,7 @@ uint64_t scanDepth2Batched(const uint16_t *chns, const Windows &win, const Depth
 		bool small = true; // offsets the lanes' 32 bits hold (any real level's do)
 		for (int l = 0; l < Lanes; l++) {
 			if (l < n)
-				win.at(i + l, rs[l], cs[l]);
+				win.next(rs[l], cs[l]);
 			else
 				rs[l] = rs[0], cs[l] = cs[0];
 			at[l] = ptrdiff_t(rs[l]) * win.step * win.rowStride + ptrdiff_t(cs[l]) * win.step;

@@ -102,7 +102,7 @@ uint64_t scanDepth2_avx2(const uint16_t *chns, ptrdiff_t rowStride, int rows, in
 {
 	if (rows <= 0 || cols <= 0)
 		return 0;
-	const GridWindows win = { rows, cols, step, rowStride };
+	const GridWindows win = { rows, cols, step, rowStride, 0, 0 };
 	return scanDepth2Batched<8>(chns, win, trees, nTrees, cascThr, kScalarBelow, hits, capacity,
 				    Avx2Walk());
 }
@@ -111,7 +111,7 @@ uint64_t scanDepth2List_avx2(const uint16_t *chns, ptrdiff_t rowStride, const ui
 			     size_t count, int step, const Depth2Tree *trees, int nTrees,
 			     int32_t cascThr, WindowHit *hits, uint64_t capacity)
 {
-	const ListWindows win = { windows, count, step, rowStride };
+	const ListWindows win = { windows, count, step, rowStride, 0 };
 	return scanDepth2Batched<8>(chns, win, trees, nTrees, cascThr, kScalarBelow, hits, capacity,
 				    Avx2Walk());
 }
