@@ -104,8 +104,7 @@ const KernelTable &neonKernels()
 		t.normalizeMag = normalizeMag_neon;
 		t.shrink4 = shrink4_neon;
 		t.gradHist4 = gradHist4_neon;
-		t.scanDepth2 = scanDepth2_neon;
-		t.scanDepth2List = scanDepth2List_neon;
+		t.scanDepth2List = scanDepth2List_neon; // the grid stays scalar (trees_neon.cpp)
 		return t;
 	}();
 	return table;

@@ -241,16 +241,14 @@ uint64_t scanDepth2List_ref(const uint16_t *chns, ptrdiff_t rowStride, const uin
 uint64_t scanTreesList_ref(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
 			   size_t count, int step, const TreeNode *nodes, int nTrees,
 			   int nodesPerTree, int32_t cascThr, WindowHit *hits, uint64_t capacity);
-// Depth-2 trees several windows at a time (trees_batch.h): eight with AVX2, four with NEON.
+// Depth-2 trees several windows at a time (trees_batch.h): eight with AVX2, four with NEON
+// (window lists only: the grid's windows stop too early for four lanes to pay on ARM).
 uint64_t scanDepth2_avx2(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
 			 const Depth2Tree *trees, int nTrees, int32_t cascThr, WindowHit *hits,
 			 uint64_t capacity);
 uint64_t scanDepth2List_avx2(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
 			     size_t count, int step, const Depth2Tree *trees, int nTrees,
 			     int32_t cascThr, WindowHit *hits, uint64_t capacity);
-uint64_t scanDepth2_neon(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
-			 const Depth2Tree *trees, int nTrees, int32_t cascThr, WindowHit *hits,
-			 uint64_t capacity);
 uint64_t scanDepth2List_neon(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
 			     size_t count, int step, const Depth2Tree *trees, int nTrees,
 			     int32_t cascThr, WindowHit *hits, uint64_t capacity);
