@@ -56,7 +56,7 @@ profile() { # name, first frame, frames, bench arguments... -> $tmp/name.tsv: ke
 		/PROGRAM TOTALS/ { gsub(",", "", $1); print "total\t" $1; next }
 		/^ *[0-9,]+ +\(/ && /:/ {
 			n = $1; gsub(",", "", n)
-			f = $0; sub(/^[^:]*:/, "", f); gsub(/\(anonymous namespace\)::/, "", f); sub(/\(.*/, "", f)
+			f = $0; sub(/^[^:]*:/, "", f); gsub(/\(anonymous namespace\)::/, "", f); sub(/\(.*/, "", f); while (f ~ /<[^<>]*>/) gsub(/<[^<>]*>/, "", f)
 			k = "other"
 			if (f ~ /calped::kernels::/) {
 				k = f; sub(/.*::/, "", k); sub(/_(ref|opt|avx2|neon)$/, "", k)

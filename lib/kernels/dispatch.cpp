@@ -67,6 +67,8 @@ const KernelTable &avx2Kernels()
 		t.normalizeMag = normalizeMag_avx2;
 		t.gradHist4 = gradHist4_avx2;
 		t.shrink4 = shrink4_avx2;
+		t.scanDepth2 = scanDepth2_avx2;
+		t.scanDepth2List = scanDepth2List_avx2;
 		return t;
 	}();
 	return table;
@@ -102,6 +104,7 @@ const KernelTable &neonKernels()
 		t.normalizeMag = normalizeMag_neon;
 		t.shrink4 = shrink4_neon;
 		t.gradHist4 = gradHist4_neon;
+		t.scanDepth2List = scanDepth2List_neon; // the grid stays scalar (trees_neon.cpp)
 		return t;
 	}();
 	return table;
@@ -173,6 +176,16 @@ const ConvertKernels &avx2ConvertKernels()
 }
 #endif
 
+#if CALPED_HAVE_NEON
+const ConvertKernels &neonConvertKernels()
+{
+	static const ConvertKernels table = {
+		"neon", bgr8ToRgb8_neon, gray8ToRgb8_neon, yuv420ToRgb8_neon, yuyvToRgb8_neon, bayerToRgb8_neon,
+	};
+	return table;
+}
+#endif
+
 } // namespace
 
 const ConvertKernels &bestConvertKernels()
@@ -180,6 +193,9 @@ const ConvertKernels &bestConvertKernels()
 #if CALPED_HAVE_AVX2
 	if (cpuHasAvx2())
 		return avx2ConvertKernels();
+#endif
+#if CALPED_HAVE_NEON
+	return neonConvertKernels();
 #endif
 	return portableConvertKernels();
 }
@@ -196,6 +212,9 @@ int availableConvertKernels(const ConvertKernels *out[], int capacity)
 #if CALPED_HAVE_AVX2
 	if (cpuHasAvx2())
 		add(avx2ConvertKernels());
+#endif
+#if CALPED_HAVE_NEON
+	add(neonConvertKernels());
 #endif
 	return n;
 }

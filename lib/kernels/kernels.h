@@ -241,6 +241,17 @@ uint64_t scanDepth2List_ref(const uint16_t *chns, ptrdiff_t rowStride, const uin
 uint64_t scanTreesList_ref(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
 			   size_t count, int step, const TreeNode *nodes, int nTrees,
 			   int nodesPerTree, int32_t cascThr, WindowHit *hits, uint64_t capacity);
+// Depth-2 trees several windows at a time (trees_batch.h): eight with AVX2, four with NEON
+// (window lists only: the grid's windows stop too early for four lanes to pay on ARM).
+uint64_t scanDepth2_avx2(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
+			 const Depth2Tree *trees, int nTrees, int32_t cascThr, WindowHit *hits,
+			 uint64_t capacity);
+uint64_t scanDepth2List_avx2(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
+			     size_t count, int step, const Depth2Tree *trees, int nTrees,
+			     int32_t cascThr, WindowHit *hits, uint64_t capacity);
+uint64_t scanDepth2List_neon(const uint16_t *chns, ptrdiff_t rowStride, const uint32_t *windows,
+			     size_t count, int step, const Depth2Tree *trees, int nTrees,
+			     int32_t cascThr, WindowHit *hits, uint64_t capacity);
 
 // AVX2 builds of the portable optimised kernels (x86/portable_avx2.cpp), and RGB8
 // resampling at any ratio in 32-bit lanes (x86/resample_rgb8_avx2.cpp).
@@ -363,6 +374,13 @@ void yuyvToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_
 void bayerToRgb8_ref(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 void bayerToRgb8_opt(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 void bayerToRgb8_avx2(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+
+// NEON versions (arm/convert_neon.cpp), sixteen pixels at a time.
+void bgr8ToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void gray8ToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuv420ToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void yuyvToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
+void bayerToRgb8_neon(const RawFrame &f, int y0, int rows, uint8_t *dst, ptrdiff_t dstStride);
 
 // The conversion kernels one pipeline uses (a table of their own, so the main
 // KernelTable and its ISA-specific tables stay untouched).

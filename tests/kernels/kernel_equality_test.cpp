@@ -165,6 +165,7 @@ TEST(KernelTables, NeonTableOnNeonTargets)
 	EXPECT_EQ(haveNeon, expectNeon);
 	if (expectNeon) {
 		EXPECT_STREQ(bestKernels().name, "neon");
+		EXPECT_STREQ(bestConvertKernels().name, "neon"); // the pixel-format conversions too
 	}
 }
 
