@@ -23,6 +23,8 @@ const KernelTable &referenceKernels()
 		scanTrees_ref,
 		scanDepth2List_ref,
 		scanTreesList_ref,
+		shrink2_ref,
+		gradHist2_ref,
 	};
 	return table;
 }
@@ -45,6 +47,8 @@ const KernelTable &portableKernels()
 		scanTrees_ref,
 		scanDepth2List_ref,
 		scanTreesList_ref,
+		shrink2_ref,
+		gradHist2_ref,
 	};
 	return table;
 }

@@ -200,6 +200,20 @@ void gradHist4_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t strid
 		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
 		    ptrdiff_t histStride, uint32_t *scratch);
 
+// 2x2 block average (shrink 2): dst is width/2 x height/2, divided by a further
+// 2^extraShift. No scratch needed (the argument keeps shrink4's signature).
+void shrink2_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+
+// Orientation histograms over 2x2 cells (gradHist, binSize 2): nOrients planes of
+// width/2 x height/2. interpolate (softBin >= 0) splits each pixel between its two
+// nearest orientations; spatial (softBin odd) also spreads it over the four nearest cells
+// with the toolbox's bilinear weights (3/4 and 1/4 each way) and scales the border cells
+// by 8/7, as its gradHist does. scratch holds 2 * nOrients * width uint32 (8-byte aligned).
+void gradHist2_ref(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		   int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		   ptrdiff_t histStride, uint32_t *scratch);
+
 // ---- boosted trees over sliding windows ------------------------------------------------
 // A complete depth-2 tree with its feature offsets resolved for the level layout:
 // node 0 tests off[0] < thr[0]; then node 1 (left) or node 2 (right); leaves 0..3 are
@@ -308,6 +322,9 @@ struct KernelTable {
 	decltype(&scanTrees_ref) scanTrees;
 	decltype(&scanDepth2List_ref) scanDepth2List;
 	decltype(&scanTreesList_ref) scanTreesList;
+	// Shrink 2 (Caltech+, LDCF): the references in every table until SIMD versions exist.
+	decltype(&shrink2_ref) shrink2;
+	decltype(&gradHist2_ref) gradHist2;
 };
 
 // The plain scalar references (the specification).
