@@ -25,6 +25,7 @@ const KernelTable &referenceKernels()
 		scanTreesList_ref,
 		shrink2_ref,
 		gradHist2_ref,
+		ldcfFilter_ref,
 	};
 	return table;
 }
@@ -49,6 +50,7 @@ const KernelTable &portableKernels()
 		scanTreesList_ref,
 		shrink2_ref,
 		gradHist2_ref,
+		ldcfFilter_ref,
 	};
 	return table;
 }

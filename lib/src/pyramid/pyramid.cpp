@@ -20,11 +20,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		return Status::error(ErrorCode::InvalidArgument,
 				     "pyramid upscale %g is outside [1, 8]", upscale);
 	upscale_ = upscale;
-	if (params.nFilters != 0)
-		return Status::error(ErrorCode::ModelUnsupported,
-				     "LDCF filters (%d of %dx%d per channel) are not implemented by the "
-				     "detector yet", int(params.nFilters), int(params.filterSize),
-				     int(params.filterSize));
+	// LDCF's filters (params.nFilters) apply after the pyramid (pyramid/ldcf_filter.h).
 	if ((params.shrink != 4 && params.shrink != 2) || params.nOrients != 6 ||
 	    params.gradFull != 0 || params.gradColorChn != 0 || params.pyramidSmooth > 1 ||
 	    params.colorSmooth > 1 || params.histBinSize != params.shrink)
