@@ -23,6 +23,9 @@ const KernelTable &referenceKernels()
 		scanTrees_ref,
 		scanDepth2List_ref,
 		scanTreesList_ref,
+		shrink2_ref,
+		gradHist2_ref,
+		ldcfFilter_ref,
 	};
 	return table;
 }
@@ -45,6 +48,9 @@ const KernelTable &portableKernels()
 		scanTrees_ref,
 		scanDepth2List_ref,
 		scanTreesList_ref,
+		shrink2_ref,
+		gradHist2_ref,
+		ldcfFilter_ref,
 	};
 	return table;
 }

@@ -200,6 +200,34 @@ void gradHist4_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t strid
 		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
 		    ptrdiff_t histStride, uint32_t *scratch);
 
+// 2x2 block average (shrink 2): dst is width/2 x height/2, divided by a further
+// 2^extraShift. No scratch needed (the argument keeps shrink4's signature).
+void shrink2_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+
+// Orientation histograms over 2x2 cells (gradHist, binSize 2): nOrients planes of
+// width/2 x height/2. interpolate (softBin >= 0) splits each pixel between its two
+// nearest orientations; spatial (softBin odd) also spreads it over the four nearest cells
+// with the toolbox's bilinear weights (3/4 and 1/4 each way) and scales the border cells
+// by 8/7, as its gradHist does. scratch holds 2 * nOrients * width uint32 (8-byte aligned).
+void gradHist2_ref(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		   int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		   ptrdiff_t histStride, uint32_t *scratch);
+
+// ---- LDCF (locally decorrelated channels) ----------------------------------------------
+// Filtered channels are signed and reach beyond Q14's [0, 4) (LdcfInriaDetector's
+// thresholds go to 4.44): they are kept as q + kLdcfBias with q = round(value * 2^kLdcfQ),
+// saturated to uint16, i.e. [-8, 8) in steps of 1/4096. Tree thresholds are moved to the
+// same format (a Q14 threshold T becomes ceil(T / 4) + kLdcfBias, exactly the same splits).
+constexpr int kLdcfQ = 12;
+constexpr int kLdcfBias = 1 << 15;
+// Matlab's conv2(src, filter, 'same') (a convolution: the filter flipped), zero outside the
+// plane: a Q14 channel plane of width x height and a size x size Q15 filter (row-major,
+// size odd) into a biased Q12 plane of the same size. Resampling it afterwards with the
+// resample kernels keeps the bias exact (their weights sum to 2^14).
+void ldcfFilter_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		    const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride);
+
 // ---- boosted trees over sliding windows ------------------------------------------------
 // A complete depth-2 tree with its feature offsets resolved for the level layout:
 // node 0 tests off[0] < thr[0]; then node 1 (left) or node 2 (right); leaves 0..3 are
@@ -319,6 +347,11 @@ struct KernelTable {
 	decltype(&scanTrees_ref) scanTrees;
 	decltype(&scanDepth2List_ref) scanDepth2List;
 	decltype(&scanTreesList_ref) scanTreesList;
+	// Shrink 2 (Caltech+, LDCF): the references in every table until SIMD versions exist.
+	decltype(&shrink2_ref) shrink2;
+	decltype(&gradHist2_ref) gradHist2;
+	// LDCF's filter (the reference in every table until SIMD versions exist).
+	decltype(&ldcfFilter_ref) ldcfFilter;
 };
 
 // The plain scalar references (the specification).

@@ -54,7 +54,14 @@ std::string petsFrame(int k)
 
 std::string inriaModelBlob()
 {
-	const std::string blob = env("CALPED_BUILD_DIR") + "/tests/inria-test.cpm";
+	return toolboxModelBlob("AcfInriaDetector");
+}
+
+std::string toolboxModelBlob(const std::string &name)
+{
+	// The INRIA blob keeps its old name: other tests and benchmarks know it.
+	const std::string file = name == "AcfInriaDetector" ? "inria-test" : name + "-test";
+	const std::string blob = env("CALPED_BUILD_DIR") + "/tests/" + file + ".cpm";
 	if (exists(blob))
 		return blob;
 	const std::string shared = sharedDir();
@@ -65,7 +72,7 @@ std::string inriaModelBlob()
 	// which is atomic, so nobody reads a half-written blob.
 	const std::string tmp = blob + "." + std::to_string(getpid());
 	const std::string cmd = "'" + convert + "' '" + shared +
-				"/models/dollar-toolbox/AcfInriaDetector.mat' '" + tmp +
+				"/models/dollar-toolbox/" + name + ".mat' '" + tmp +
 				"' > /dev/null";
 	if (std::system(cmd.c_str()) != 0 || std::rename(tmp.c_str(), blob.c_str()) != 0) {
 		std::remove(tmp.c_str());

@@ -16,6 +16,9 @@ std::string sharedDir();
 std::string petsFrame(int k);
 // A converted INRIA model blob made for the tests (converting it if needed), or "".
 std::string inriaModelBlob();
+// The same for another of the toolbox's detectors in ../shared/models/dollar-toolbox, by
+// its .mat name without the extension (e.g. "AcfCaltech+Detector").
+std::string toolboxModelBlob(const std::string &name);
 
 struct RgbImage {
 	int width = 0, height = 0;

@@ -343,3 +343,61 @@ TEST(BoundedMemory, PetsInEveryPixelFormatAllocatesNothing)
 		EXPECT_GT(detections, 0) << pixelFormatName(f);
 	}
 }
+
+// The Caltech+ model's options (shrink 2, softBin 1, no colour smoothing, 64x32 windows;
+// the same 5120 features as INRIA): 2x2 cells and spatially interpolated histograms, in
+// the generic method and the calibrated one with placed levels in rectangles.
+TEST(BoundedMemory, ShrinkTwoModelAllocatesNothing)
+{
+	Model model = test::randomModel(11, 512);
+	ModelParams &p = model.params;
+	p.shrink = 2;
+	p.histBinSize = 2;
+	p.softBin = 1;
+	p.colorSmooth = 0;
+	p.modelDsH = 50;
+	p.modelDsW = 20.5f;
+	p.modelDsPadH = 64;
+	p.modelDsPadW = 32;
+	p.minDsH = 50;
+	p.minDsW = 20.5f;
+	p.padH = 8;
+	p.padW = 6;
+	ASSERT_TRUE(validateModel(model).ok()) << validateModel(model).message();
+	ASSERT_EQ(model.featureCount(), 5120);
+	Eigen::Matrix3d K;
+	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	std::vector<std::vector<uint8_t>> frames;
+	for (uint32_t s = 0; s < 3; s++)
+		frames.push_back(test::randomImage(s, 320, 240));
+	for (bool calibrated : { false, true }) {
+		DetectorConfig cfg;
+		cfg.maxWidth = 320;
+		cfg.maxHeight = 240;
+		cfg.cascadeThreshold = -10.0f;
+		if (calibrated) {
+			cfg.method = DetectionMethod::Calibrated;
+			cfg.camera = &camera;
+			cfg.resize = 2.0;
+			cfg.resizeAt = ResizeAt::Pyramid;
+			cfg.calibrated = CalibratedSettings();
+			cfg.calibrated->levels = PyramidLevels::Placed;
+		}
+		std::unique_ptr<Detector> det;
+		const Status st = Detector::create(model, cfg, det);
+		ASSERT_TRUE(st.ok()) << st.message();
+		int detections = 0;
+		EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0);
+		std::printf("shrink 2, %s: %d detections, %llu windows in the last frame, 0 allocations\n",
+			    calibrated ? "calibrated, placed levels" : "generic", detections,
+			    (unsigned long long)det->lastStats().windows);
+		EXPECT_GT(det->lastStats().windows, 0u);
+		if (calibrated) {
+			EXPECT_GT(DetectorInternals::of(*det).pyramid.rectsComputed, 0);
+		}
+	}
+}

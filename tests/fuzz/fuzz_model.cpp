@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// loadModel on arbitrary bytes, twice: as a whole blob (header, magic, version, CRCs), and
-// as a payload wrapped in a header with correct CRCs, so mutations reach the payload parser
-// and validateModel instead of stopping at the checksum. A model that loads must validate
+// loadModel on arbitrary bytes, three times: as a whole blob (header, magic, version, CRCs),
+// and as a payload wrapped in a version-2 and in a version-1 header with correct CRCs, so
+// mutations reach the payload parser (version 2's filter shape and weights included) and
+// validateModel instead of stopping at the checksum. A model that loads must validate
 // and survive serializeModel -> loadModel unchanged.
 #include <cstddef>
 #include <cstdint>
@@ -19,12 +20,12 @@ using namespace calped;
 
 namespace {
 
-std::vector<uint8_t> wrapPayload(const uint8_t *payload, size_t size)
+std::vector<uint8_t> wrapPayload(const uint8_t *payload, size_t size, uint32_t version)
 {
 	std::vector<uint8_t> blob(blob::kHeaderSize);
 	for (size_t i = 0; i < sizeof(blob::kMagic); i++)
 		blob[i] = blob::kMagic[i];
-	writeLe32(&blob[blob::kVersionOffset], blob::kVersion);
+	writeLe32(&blob[blob::kVersionOffset], version);
 	writeLe32(&blob[blob::kHeaderSizeOffset], blob::kHeaderSize);
 	writeLe32(&blob[blob::kPayloadSizeOffset], static_cast<uint32_t>(size));
 	writeLe32(&blob[blob::kPayloadSizeOffset + 4], static_cast<uint32_t>(uint64_t(size) >> 32));
@@ -38,7 +39,9 @@ bool sameModel(const Model &a, const Model &b)
 {
 	return a.name == b.name && a.nTrees == b.nTrees && a.nodesPerTree == b.nodesPerTree &&
 	       a.treeDepth == b.treeDepth && a.fids == b.fids && a.thrs == b.thrs &&
-	       a.child == b.child && a.hs == b.hs && a.featureCount() == b.featureCount();
+	       a.child == b.child && a.hs == b.hs && a.featureCount() == b.featureCount() &&
+	       a.params.nFilters == b.params.nFilters && a.params.filterSize == b.params.filterSize &&
+	       a.filters == b.filters;
 }
 
 void check(const uint8_t *data, size_t size)
@@ -66,7 +69,9 @@ void check(const uint8_t *data, size_t size)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	check(data, size);
-	const std::vector<uint8_t> wrapped = wrapPayload(data, size);
-	check(wrapped.data(), wrapped.size());
+	for (uint32_t version : { blob::kVersion, blob::kOldestVersion }) {
+		const std::vector<uint8_t> wrapped = wrapPayload(data, size, version);
+		check(wrapped.data(), wrapped.size());
+	}
 	return 0;
 }

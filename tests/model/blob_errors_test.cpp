@@ -164,15 +164,55 @@ TEST(ModelBlobErrors, EmptyInputIsTruncatedAndNullDataIsInvalidArgument)
 	EXPECT_EQ(loadModel(nullptr, 100, out).code(), ErrorCode::InvalidArgument);
 }
 
-TEST(ModelBlobErrors, NewerVersionIsBadVersion)
+TEST(ModelBlobErrors, NewerOrOlderVersionIsBadVersion)
 {
-	std::vector<uint8_t> blob = serializeModel(test::makeSmallModel());
-	writeLe32(blob.data() + 8, 2);
-	test::refreshChecksums(blob);
+	for (uint32_t version : { 3u, 0u, 0x80000002u }) {
+		std::vector<uint8_t> blob = serializeModel(test::makeSmallModel());
+		writeLe32(blob.data() + 8, version);
+		test::refreshChecksums(blob);
+		Model out;
+		const Status s = load(blob, out);
+		EXPECT_EQ(s.code(), ErrorCode::ModelBadVersion);
+		EXPECT_NE(std::string(s.message()).find("version = " + std::to_string(version)),
+			  std::string::npos) << s.message();
+		expectEmpty(out);
+	}
+}
+
+TEST(ModelBlobErrors, VersionOneBlobsAreCheckedLikeVersionTwo)
+{
+	// Every truncation of a version-1 blob is still ModelTruncated, and a version-1 header in
+	// front of a version-2 payload (8 bytes too long for version 1's layout) is refused.
+	const std::vector<uint8_t> v1 = test::versionOneBlob(test::makeSmallModel());
+	for (size_t length = 0; length < v1.size(); length++) {
+		Model out;
+		ASSERT_EQ(loadModel(v1.data(), length, out).code(), ErrorCode::ModelTruncated) << length;
+	}
+	std::vector<uint8_t> mixed = serializeModel(test::makeSmallModel());
+	writeLe32(mixed.data() + 8, 1);
+	test::refreshChecksums(mixed);
 	Model out;
-	const Status s = load(blob, out);
-	EXPECT_EQ(s.code(), ErrorCode::ModelBadVersion);
-	EXPECT_NE(std::string(s.message()).find("version = 2"), std::string::npos) << s.message();
+	EXPECT_EQ(load(mixed, out).code(), ErrorCode::ModelInvalid);
+	expectEmpty(out);
+}
+
+TEST(ModelBlobErrors, FilterShapeBeyondThePayloadIsInvalidWithoutAHugeAllocation)
+{
+	// nFilters and filterSize are checked before the weights are sized.
+	for (const auto &shape : { std::pair<int32_t, int32_t>{ 16, 15 }, { 17, 5 }, { 4, 16 },
+				   { -1, 5 }, { 4, -3 } }) {
+		std::vector<uint8_t> blob = serializeModel(test::makeSmallModel());
+		writeLe32(blob.data() + 144, static_cast<uint32_t>(shape.first));
+		writeLe32(blob.data() + 148, static_cast<uint32_t>(shape.second));
+		test::refreshChecksums(blob);
+		Model out;
+		const Status s = load(blob, out);
+		EXPECT_EQ(s.code(), ErrorCode::ModelInvalid) << s.message();
+		EXPECT_TRUE(std::string(s.message()).find("filter") != std::string::npos ||
+			    std::string(s.message()).find("nFilters") != std::string::npos)
+			<< s.message();
+		expectEmpty(out);
+	}
 }
 
 TEST(ModelBlobErrors, TrailingBytesAfterThePayloadAreRejected)

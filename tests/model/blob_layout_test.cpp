@@ -46,6 +46,9 @@ void expectSameModel(const Model &a, const Model &b)
 	EXPECT_EQ(p.pyramidSmooth, q.pyramidSmooth);
 	EXPECT_EQ(floatBits(p.nmsOverlap), floatBits(q.nmsOverlap));
 	EXPECT_EQ(p.nmsOverlapDenominator, q.nmsOverlapDenominator);
+	EXPECT_EQ(p.nFilters, q.nFilters);
+	EXPECT_EQ(p.filterSize, q.filterSize);
+	EXPECT_EQ(a.filters, b.filters);
 	EXPECT_EQ(a.nTrees, b.nTrees);
 	EXPECT_EQ(a.nodesPerTree, b.nodesPerTree);
 	EXPECT_EQ(a.treeDepth, b.treeDepth);
@@ -76,6 +79,11 @@ TEST(ModelBlob, UnusualModelDiffersFromDefaultsInEveryParameter)
 	const std::vector<uint8_t> unusual = serializeModel(test::makeUnusualModel());
 	Model defaults = test::makeUnusualModel();
 	defaults.params = ModelParams();
+	// The filter shape must match the weights to serialise; its words are compared below.
+	defaults.params.nFilters = 2;
+	defaults.params.filterSize = 3;
+	EXPECT_NE(ModelParams().nFilters, 2);
+	EXPECT_NE(ModelParams().filterSize, 3);
 	const std::vector<uint8_t> plain = serializeModel(defaults);
 	ASSERT_EQ(unusual.size(), plain.size());
 	for (size_t offset = 32; offset < 144; offset += 4) {
@@ -92,10 +100,12 @@ TEST(ModelBlob, HeaderAndFieldOffsetsMatchTheDocumentedLayout)
 	const std::vector<uint8_t> blob = serializeModel(m);
 	const size_t nameLength = m.name.size();
 	const size_t nodes = static_cast<size_t>(m.nTrees * m.nodesPerTree);
-	ASSERT_EQ(blob.size(), 160 + nameLength + 16 * nodes);
+	const size_t weights = m.filters.size();
+	ASSERT_EQ(weights, 2u * 10u * 3u * 3u);
+	ASSERT_EQ(blob.size(), 168 + nameLength + 4 * weights + 16 * nodes);
 
 	EXPECT_EQ(std::memcmp(blob.data(), "CALPEDM\0", 8), 0);
-	EXPECT_EQ(readLe32(&blob[8]), 1u);   // version
+	EXPECT_EQ(readLe32(&blob[8]), 2u);   // version
 	EXPECT_EQ(readLe32(&blob[12]), 32u); // header size
 	EXPECT_EQ(readLe64(&blob[16]), blob.size() - 32);
 	EXPECT_EQ(readLe32(&blob[24]), crc32(blob.data() + 32, blob.size() - 32));
@@ -114,18 +124,46 @@ TEST(ModelBlob, HeaderAndFieldOffsetsMatchTheDocumentedLayout)
 	EXPECT_EQ(readLe32(&blob[132]), 0u); // pyramidSmooth
 	EXPECT_EQ(readLe32(&blob[136]), floatBits(p.nmsOverlap));
 	EXPECT_EQ(readLe32(&blob[140]), 1u); // Union
-	EXPECT_EQ(readLe32(&blob[144]), 2u); // nTrees
-	EXPECT_EQ(readLe32(&blob[148]), 9u); // nodesPerTree
-	EXPECT_EQ(readLe32(&blob[152]), 3u); // treeDepth
-	EXPECT_EQ(readLe32(&blob[156]), nameLength);
-	EXPECT_EQ(std::string(reinterpret_cast<const char *>(&blob[160]), nameLength), m.name);
+	EXPECT_EQ(readLe32(&blob[144]), 2u); // nFilters
+	EXPECT_EQ(readLe32(&blob[148]), 3u); // filterSize
+	EXPECT_EQ(readLe32(&blob[152]), 2u); // nTrees
+	EXPECT_EQ(readLe32(&blob[156]), 9u); // nodesPerTree
+	EXPECT_EQ(readLe32(&blob[160]), 3u); // treeDepth
+	EXPECT_EQ(readLe32(&blob[164]), nameLength);
+	EXPECT_EQ(std::string(reinterpret_cast<const char *>(&blob[168]), nameLength), m.name);
+	for (size_t i = 0; i < weights; i++)
+		EXPECT_EQ(readLe32(&blob[168 + nameLength + 4 * i]), static_cast<uint32_t>(m.filters[i]))
+			<< "filters " << i;
 
-	const size_t fids = 160 + nameLength;
+	const size_t fids = 168 + nameLength + 4 * weights;
 	for (size_t i = 0; i < nodes; i++) {
 		EXPECT_EQ(readLe32(&blob[fids + 4 * i]), m.fids[i]) << "fids " << i;
 		EXPECT_EQ(readLe32(&blob[fids + 4 * nodes + 4 * i]), static_cast<uint32_t>(m.thrs[i]));
 		EXPECT_EQ(readLe32(&blob[fids + 8 * nodes + 4 * i]), m.child[i]) << "child " << i;
 		EXPECT_EQ(readLe32(&blob[fids + 12 * nodes + 4 * i]), static_cast<uint32_t>(m.hs[i]));
+	}
+}
+
+TEST(ModelBlob, VersionOneBlobsStillLoadAsModelsWithoutFilters)
+{
+	for (const Model &m : { test::makeSmallModel(4), [] {
+		     Model u = test::makeUnusualModel(); // without its filters: version 1 had none
+		     u.params.nFilters = u.params.filterSize = 0;
+		     u.filters.clear();
+		     for (uint32_t &f : u.fids)
+			     f = f ? f + 2560 : 0; // back to ten channels of 2x2 cells: 5120 features
+		     return u;
+	     }() }) {
+		const std::vector<uint8_t> v1 = test::versionOneBlob(m);
+		ASSERT_EQ(v1.size() + 8, serializeModel(m).size());
+		EXPECT_EQ(readLe32(&v1[8]), 1u);
+		EXPECT_EQ(readLe32(&v1[144]), static_cast<uint32_t>(m.nTrees)); // version 1's offsets
+		Model loaded;
+		const Status s = loadModel(v1.data(), v1.size(), loaded);
+		ASSERT_TRUE(s.ok()) << s.message();
+		expectSameModel(m, loaded);
+		// Written again, it is the version-2 blob.
+		EXPECT_EQ(serializeModel(loaded), serializeModel(m));
 	}
 }
 
@@ -136,6 +174,9 @@ TEST(ModelBlob, SerializeRefusesArraysThatDoNotMatchTheShape)
 	EXPECT_TRUE(serializeModel(m).empty());
 	m = test::makeSmallModel();
 	m.nTrees = -1;
+	EXPECT_TRUE(serializeModel(m).empty());
+	m = test::makeUnusualModel();
+	m.filters.pop_back();
 	EXPECT_TRUE(serializeModel(m).empty());
 }
 
@@ -149,6 +190,16 @@ TEST(ModelBlob, FeatureCountIsCellsTimesTenChannels)
 	EXPECT_EQ(m.featureCount(), 32 * 16 * 10); // Caltech: 64x32 pixels, shrink 2
 	m.params.modelDsPadW = 36;
 	EXPECT_EQ(m.featureCount(), 32 * 18 * 10);
+	// LDCF: shrink 2 channels, four filters each, resampled to half: 4x4 cells, 40 channels.
+	m.params.modelDsPadW = 32;
+	m.params.nFilters = 4;
+	m.params.filterSize = 5;
+	EXPECT_EQ(m.classifierShrink(), 4);
+	EXPECT_EQ(m.classifierChannels(), 40);
+	EXPECT_EQ(m.featureCount(), 16 * 8 * 40);
+	m.params.modelDsPadH = 128;
+	m.params.modelDsPadW = 64;
+	EXPECT_EQ(m.featureCount(), 32 * 16 * 40); // LdcfInriaDetector: 20480
 	m.params.shrink = 0;
 	EXPECT_EQ(m.featureCount(), 0);
 }

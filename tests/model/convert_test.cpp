@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -277,12 +278,101 @@ TEST_F(ConvertTest, NameOptionIsStoredInTheBlob)
 	EXPECT_EQ(load(blob).name, "inria-test");
 }
 
-TEST_F(ConvertTest, LdcfModelIsRefusedWithOneLineMessage)
+// The blob's node arrays against the arrays dumped straight from the .mat (--dump-arrays):
+// every fid copied, every threshold through thresholdToFixed, every leaf rounded to Q16,
+// every child c stored as c - 1.
+void expectBlobFollowsTheMatArrays(const Model &m, const fs::path &dump, size_t nodes, size_t trees)
+{
+	const Table fids = readTable(dump / "fids.txt");
+	const Table thrs = readTable(dump / "thrs.txt");
+	const Table child = readTable(dump / "child.txt");
+	const Table hs = readTable(dump / "hs.txt");
+	ASSERT_EQ(fids.size(), nodes);
+	ASSERT_EQ(m.fids.size(), nodes * trees);
+	for (size_t node = 0; node < nodes; node++) {
+		ASSERT_EQ(fids[node].size(), trees);
+		ASSERT_EQ(thrs[node].size(), trees);
+		for (size_t tree = 0; tree < trees; tree++) {
+			const size_t i = tree * nodes + node;
+			const long long c = std::stoll(child[node][tree]);
+			ASSERT_EQ(m.fids[i], std::stoull(fids[node][tree])) << "tree " << tree << " node " << node;
+			// The dump prints single-precision values with %.9g: read back as floats, exact.
+			ASSERT_EQ(m.thrs[i], thresholdToFixed(std::stof(thrs[node][tree])))
+				<< "tree " << tree << " node " << node;
+			ASSERT_EQ(m.hs[i], static_cast<int32_t>(std::llround(double(std::stof(hs[node][tree])) * 65536.0)))
+				<< "tree " << tree << " node " << node;
+			ASSERT_EQ(m.child[i], c == 0 ? 0u : static_cast<uint32_t>(c - 1));
+		}
+	}
+}
+
+TEST_F(ConvertTest, CaltechTreesEqualTheMatArrays)
+{
+	const fs::path blob = tmp_ / "caltech.cpm";
+	const RunResult r = run({ "--dump-arrays", (tmp_ / "dump").string(),
+				  (models_ / "AcfCaltech+Detector.mat").string(), blob.string() });
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	const Model m = load(blob);
+	expectBlobFollowsTheMatArrays(m, tmp_ / "dump", 63, 4096);
+	EXPECT_EQ(m.params.nFilters, 0);
+	EXPECT_TRUE(m.filters.empty());
+}
+
+TEST_F(ConvertTest, LdcfModelConvertsWithItsFilters)
 {
 	const fs::path blob = tmp_ / "ldcf.cpm";
-	const RunResult r = run({ (models_ / "LdcfInriaDetector.mat").string(), blob.string() });
-	expectOneLineFailure(r, "LDCF", blob);
-	EXPECT_NE(r.err.find("ModelUnsupported"), std::string::npos) << r.err;
+	const RunResult r = run({ "--dump-arrays", (tmp_ / "dump").string(),
+				  (models_ / "LdcfInriaDetector.mat").string(), blob.string() });
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	std::cout << "  calped-convert: " << r.out;
+	EXPECT_NE(r.out.find("LdcfInriaDetector: 1567 trees x 15 nodes, depth 3, window 100x41 in "
+			     "128x64, shrink 2, stride 4, 4 5x5 filters per channel"),
+		  std::string::npos) << r.out;
+	const Model m = load(blob);
+	const ModelParams &p = m.params;
+	// reference/dollar-toolbox-pets/LdcfInriaDetector/opts.txt
+	EXPECT_EQ(m.name, "LdcfInriaDetector");
+	EXPECT_EQ(p.shrink, 2);
+	EXPECT_EQ(m.classifierShrink(), 4);
+	EXPECT_EQ(m.classifierChannels(), 40);
+	EXPECT_EQ(m.featureCount(), 32 * 16 * 40);
+	EXPECT_EQ(p.modelDsPadH, 128);
+	EXPECT_EQ(p.modelDsPadW, 64);
+	EXPECT_EQ(p.stride, 4);
+	EXPECT_EQ(p.colorSmooth, 1);
+	EXPECT_EQ(p.softBin, 0);
+	EXPECT_EQ(p.padH, 14);
+	EXPECT_EQ(p.padW, 12);
+	EXPECT_EQ(p.nPerOct, 8);
+	EXPECT_EQ(p.nOctUp, 0);
+	EXPECT_EQ(p.nApprox, 7);
+	EXPECT_EQ(p.lambdas[0], 0.0f);
+	EXPECT_EQ(p.lambdas[1], 0.11152f);
+	EXPECT_EQ(p.lambdas[2], 0.11152f);
+	EXPECT_EQ(m.nTrees, 1567);
+	EXPECT_EQ(m.nodesPerTree, 15);
+	EXPECT_EQ(m.treeDepth, 3);
+	expectBlobFollowsTheMatArrays(m, tmp_ / "dump", 15, 1567);
+
+	// The filters against the toolbox's own float32 dump, Matlab order [5 5 10 4].
+	ASSERT_EQ(p.nFilters, 4);
+	ASSERT_EQ(p.filterSize, 5);
+	const std::string bytes = readText(reference_ / "LdcfInriaDetector" / "filters_f32.bin");
+	ASSERT_EQ(bytes.size(), 4u * 1000u);
+	ASSERT_EQ(m.filters.size(), 1000u);
+	int32_t largest = 0;
+	for (size_t j = 0; j < 4; j++)
+		for (size_t c = 0; c < 10; c++)
+			for (size_t x = 0; x < 5; x++)
+				for (size_t y = 0; y < 5; y++) {
+					float v;
+					std::memcpy(&v, bytes.data() + 4 * (y + 5 * (x + 5 * (c + 10 * j))), 4);
+					const int32_t want = static_cast<int32_t>(std::llround(double(v) * 32768.0));
+					ASSERT_EQ(m.filters[((j * 10 + c) * 5 + y) * 5 + x], want)
+						<< "filter " << j << " channel " << c << " row " << y << " col " << x;
+					largest = std::max(largest, std::abs(want));
+				}
+	EXPECT_GT(largest, 10000); // the weights are really there (|w| up to 0.365)
 }
 
 TEST_F(ConvertTest, MissingInputFileFailsWithOneLineMessage)

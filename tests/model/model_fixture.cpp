@@ -64,6 +64,11 @@ Model makeUnusualModel()
 	p.pyramidSmooth = 0;
 	p.nmsOverlap = 0.5f;
 	p.nmsOverlapDenominator = NmsOverlapDenominator::Union;
+	// LDCF-like: two 3x3 filters per channel, so the trees read 20 channels of 4x4 cells.
+	p.nFilters = 2;
+	p.filterSize = 3;
+	for (int32_t i = 0; i < 2 * 10 * 9; i++)
+		m.filters.push_back((i * 7717) % 65537 - 32768);
 	// Uneven trees: tree 0 is a lone leaf, tree 1 reaches depth 3 with unused slots at the end.
 	m.nTrees = 2;
 	m.nodesPerTree = 9;
@@ -72,11 +77,22 @@ Model makeUnusualModel()
 					1, 0, 3, 5, 0, 0, 0, 0, 0 };
 	for (uint32_t i = 0; i < 18; i++) {
 		m.child.push_back(children[i]);
-		m.fids.push_back(children[i] ? 5119 - i : 0);
+		m.fids.push_back(children[i] ? 2559 - i : 0); // featureCount 16 * 8 * 20
 		m.thrs.push_back(children[i] ? -100000 + static_cast<int32_t>(i) * 12345 : 0);
 		m.hs.push_back(static_cast<int32_t>(i) * 1000 - 9000);
 	}
 	return m;
+}
+
+std::vector<uint8_t> versionOneBlob(const Model &acf)
+{
+	std::vector<uint8_t> blob = serializeModel(acf);
+	// Version 2 put nFilters and filterSize right after the 28 version-1 parameter words.
+	const size_t at = blob::kHeaderSize + 4 * blob::kParamWordsV1;
+	blob.erase(blob.begin() + at, blob.begin() + at + 8);
+	writeLe32(blob.data() + blob::kVersionOffset, 1);
+	refreshChecksums(blob);
+	return blob;
 }
 
 void refreshChecksums(std::vector<uint8_t> &blob)

@@ -225,6 +225,68 @@ TEST(ModelValidation, EachParameterOutOfRangeIsRejectedAndNamed)
 	}
 }
 
+// An LDCF model with its filter shape edited and the weights array resized to match (so
+// that the blob can carry it); only the named rule is broken.
+Model withFilterShape(int32_t nFilters, int32_t filterSize)
+{
+	Model m = test::makeUnusualModel();
+	m.params.nFilters = nFilters;
+	m.params.filterSize = filterSize;
+	const int64_t count = int64_t(nFilters) * 10 * filterSize * filterSize;
+	m.filters.assign(count > 0 ? size_t(count) : 0, 1000);
+	return m;
+}
+
+TEST(ModelValidation, EachFilterRuleIsEnforcedAndNamed)
+{
+	const ErrorCode bad = ErrorCode::ModelInvalid;
+	expectRejected(withFilterShape(17, 3), bad, "nFilters = 17");
+	expectRejected(withFilterShape(2, 4), bad, "filterSize = 4");
+	expectRejected(withFilterShape(2, 17), bad, "filterSize = 17");
+	expectRejected(withFilterShape(2, 0), bad, "filterSize = 0");
+	expectRejected(withFilterShape(0, 3), bad, "filterSize = 3");
+	for (int32_t weight : { 32769, -32769, INT32_MIN, INT32_MAX }) {
+		Model m = test::makeUnusualModel();
+		m.filters[37] = weight;
+		expectRejected(m, bad, "filters[37] = " + std::to_string(weight));
+	}
+	// The trees read cells of 2 * shrink (here 4 pixels): window and stride in whole cells.
+	Model m = test::makeUnusualModel();
+	m.params.stride = 6;
+	expectRejected(m, bad, "stride = 6");
+	m = test::makeUnusualModel();
+	m.params.modelDsPadW = 34;
+	expectRejected(m, bad, "modelDsPadW = 34");
+	// Feature indices are bounded by the filtered channels' count, 16 x 8 cells x 20 channels.
+	m = test::makeUnusualModel();
+	m.fids[9] = 2560;
+	expectRejected(m, bad, "is not below featureCount 2560");
+	// Weights without a shape, or of the wrong count, cannot be serialised; validateModel
+	// refuses them too.
+	m = test::makeUnusualModel();
+	m.filters.pop_back();
+	EXPECT_EQ(validateModel(m).code(), bad);
+	EXPECT_NE(std::string(validateModel(m).message()).find("filters has 179 weights"), std::string::npos)
+		<< validateModel(m).message();
+	m = test::makeSmallModel();
+	m.filters.push_back(0);
+	EXPECT_EQ(validateModel(m).code(), bad);
+	EXPECT_NE(std::string(validateModel(m).message()).find("nFilters is 0"), std::string::npos)
+		<< validateModel(m).message();
+}
+
+TEST(ModelValidation, FilterBoundariesAreAccepted)
+{
+	Model m = withFilterShape(16, 15);
+	m.filters.front() = 32768;
+	m.filters.back() = -32768;
+	EXPECT_TRUE(validateModel(m).ok()) << validateModel(m).message();
+	m = withFilterShape(1, 1);
+	for (uint32_t &f : m.fids)
+		f %= 1280; // 16 x 8 cells x 10 channels
+	EXPECT_TRUE(validateModel(m).ok()) << validateModel(m).message();
+}
+
 TEST(ModelValidation, BoundaryParametersAreAccepted)
 {
 	const std::function<void(ModelParams &)> edits[] = {

@@ -269,17 +269,7 @@ Status readNms(const MatNode &opts, ModelParams &p)
 Status readDetectorOpts(const MatNode &opts, ModelParams &out)
 {
 	ModelParams p;
-	// LDCF first: its other options look like ACF, only the filters differ.
-	if (hasField(opts, "filters")) {
-		MatNode filters;
-		Status s = field(opts, "filters", filters);
-		if (!s.ok())
-			return s;
-		if (elementCount(filters) != 0)
-			return Status::error(ErrorCode::ModelUnsupported,
-					     "LDCF filters are not supported (%s is %s); convert an ACF model",
-					     filters.path.c_str(), shapeString(filters).c_str());
-	}
+	// LDCF's filters are read by readDetectorFilters (detector_filters.h).
 	Status s = readPyramid(opts, p);
 	float modelDs[2] = { 0, 0 };
 	if (s.ok())

@@ -10,8 +10,8 @@
 namespace calped {
 namespace convert {
 
-// Reads every option calped uses. Fails with ModelUnsupported for LDCF filters, a colour
-// space other than LUV, disabled or custom channels, HOG channels and NMS types other than
+// Reads every option calped uses but LDCF's filters (readDetectorFilters). Fails with
+// ModelUnsupported for a colour space other than LUV, disabled or custom channels, HOG channels and NMS types other than
 // 'maxg'; with ModelInvalid for missing or malformed fields. Ranges are left to validateModel.
 Status readDetectorOpts(const MatNode &opts, ModelParams &out);
 

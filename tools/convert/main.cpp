@@ -19,6 +19,7 @@
 #include "array_dump.h"
 #include "atomic_file.h"
 #include "detector_clf.h"
+#include "detector_filters.h"
 #include "detector_opts.h"
 #include "mat_reader.h"
 #include "program.h"
@@ -34,7 +35,7 @@ const apps::ProgramInfo kProgram = {
 	"calped-convert",
 	"usage: calped-convert [--dump-arrays DIR] [--name NAME] IN.mat OUT.cpm\n"
 	"\n"
-	"Converts a detector trained with Piotr Dollar's toolbox (ACF, Matlab v5 .mat) into a\n"
+	"Converts a detector trained with Piotr Dollar's toolbox (ACF or LDCF, Matlab v5 .mat)\ninto a "
 	"calped model blob (docs/model-format.md).\n"
 	"\n"
 	"options:\n",
@@ -129,6 +130,8 @@ Status convert(const Options &o, Model &model, size_t &blobSize)
 	if (s.ok())
 		s = readDetectorOpts(opts, model.params);
 	if (s.ok())
+		s = readDetectorFilters(opts, model);
+	if (s.ok())
 		s = field(detector, "clf", clf);
 	RawClf raw;
 	if (s.ok())
@@ -165,11 +168,15 @@ int run(int argc, char **argv)
 		return kExitFailure;
 	}
 	const ModelParams &p = model.params;
+	char filters[64] = "";
+	if (p.nFilters > 0)
+		std::snprintf(filters, sizeof(filters), ", %d %dx%d filters per channel", p.nFilters,
+			      p.filterSize, p.filterSize);
 	std::printf("%s: %d trees x %d nodes, depth %d, window %gx%g in %dx%d, shrink %d, "
-		    "stride %d -> %s (%zu bytes)\n",
+		    "stride %d%s -> %s (%zu bytes)\n",
 		    model.name.c_str(), model.nTrees, model.nodesPerTree, model.treeDepth,
 		    static_cast<double>(p.modelDsH), static_cast<double>(p.modelDsW), p.modelDsPadH,
-		    p.modelDsPadW, p.shrink, p.stride, o.output.c_str(), blobSize);
+		    p.modelDsPadW, p.shrink, p.stride, filters, o.output.c_str(), blobSize);
 	return 0;
 }
 

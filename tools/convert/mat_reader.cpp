@@ -142,6 +142,16 @@ bool matrixShape(const MatNode &node, size_t &rows, size_t &cols)
 	return true;
 }
 
+std::vector<size_t> dimensions(const MatNode &node)
+{
+	std::vector<size_t> dims;
+	if (!node.var || node.var->rank <= 0 || !node.var->dims)
+		return dims;
+	for (int i = 0; i < node.var->rank; i++)
+		dims.push_back(node.var->dims[i]);
+	return dims;
+}
+
 std::string shapeString(const MatNode &node)
 {
 	if (!node.var || node.var->rank <= 0 || !node.var->dims)

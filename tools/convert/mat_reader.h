@@ -47,6 +47,8 @@ private:
 size_t elementCount(const MatNode &node);
 // Rows and columns of a two-dimensional array; false for any other rank.
 bool matrixShape(const MatNode &node, size_t &rows, size_t &cols);
+// Every dimension, in order (empty for a missing variable).
+std::vector<size_t> dimensions(const MatNode &node);
 // "7x2048": the dimensions, for messages.
 std::string shapeString(const MatNode &node);
 

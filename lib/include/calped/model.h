@@ -17,6 +17,9 @@ namespace calped {
 constexpr int kChannelFracBits = 14;
 // Fixed-point format of leaf values and scores: value = q / 2^kScoreFracBits.
 constexpr int kScoreFracBits = 16;
+// Fixed-point format of LDCF filter weights: value = q / 2^kFilterFracBits. The toolbox's
+// filters are unit-norm eigenvectors, so every weight lies in [-1, 1].
+constexpr int kFilterFracBits = 15;
 
 enum class NmsOverlapDenominator : uint32_t { Min = 0, Union = 1 };
 
@@ -46,6 +49,12 @@ struct ModelParams {
 	float minDsH = 100, minDsW = 41;
 	int32_t pyramidSmooth = 1;                       // convTri radius applied to every level
 
+	// LDCF (opts.filters, Nam, Dollar and Han 2014): each of the ten channels is replicated
+	// nFilters times, convolved with a filterSize x filterSize filter and resampled to half
+	// size, so the trees see nFilters * 10 channels at twice the shrink. 0 and 0 for ACF.
+	int32_t nFilters = 0;
+	int32_t filterSize = 0;
+
 	// Non-maximum suppression (pNms, type 'maxg').
 	float nmsOverlap = 0.65f;
 	NmsOverlapDenominator nmsOverlapDenominator = NmsOverlapDenominator::Min;
@@ -65,8 +74,18 @@ struct Model {
 	std::vector<int32_t> thrs;     // threshold in channel fixed point; go left if q < thr
 	std::vector<uint32_t> child;   // see above
 	std::vector<int32_t> hs;       // leaf value in score fixed point
+	// LDCF filter weights in Q15 (kFilterFracBits), as the toolbox stores them (applied by
+	// convolution, i.e. flipped): weight (row y, column x) of filter j for channel c is
+	// filters[((j * 10 + c) * filterSize + y) * filterSize + x]. Empty for ACF.
+	std::vector<int32_t> filters;
 
-	// Number of feature values in one window: (modelDsPadH/shrink) * (modelDsPadW/shrink) * 10.
+	// Pixels per cell of the channels the trees read: shrink, doubled by LDCF's resampling.
+	int32_t classifierShrink() const;
+	// Channels the trees read: 10, times nFilters for LDCF (filtered channel c of filter j is
+	// channel j * 10 + c, the toolbox's repmat order).
+	int32_t classifierChannels() const;
+	// Number of feature values in one window: (modelDsPadH / classifierShrink()) *
+	// (modelDsPadW / classifierShrink()) * classifierChannels().
 	int32_t featureCount() const;
 };
 

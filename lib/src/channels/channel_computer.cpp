@@ -19,14 +19,16 @@ void ChannelComputer::init(const ModelParams &params, int maxWidth, int maxHeigh
 	orient_.allocate(maxWidth, maxHeight);
 	magSum_.allocate(maxWidth, maxHeight);
 	const size_t longest = size_t(std::max(maxWidth, maxHeight));
-	rowTmp_.assign(std::max(longest, size_t(params.nOrients) * (maxWidth + 4)), 0);
+	// gradHist2's uint64 sums take two words per orientation and cell.
+	rowTmp_.assign(std::max(longest, 2 * size_t(params.nOrients) * (maxWidth + 4)), 0);
 	gradScratch_.assign(longest * 4 + 16, 0);
 }
 
 void ChannelComputer::compute(const Plane<const uint16_t> luv[3], int width, int height,
 			      const Plane<uint16_t> out[kChannelCount])
 {
-	// Colour: smoothed [1 2 1] at full resolution, then averaged over 4x4 cells.
+	// Colour: smoothed [1 2 1] at full resolution, then averaged over shrink x shrink cells.
+	const auto shrink = params_.shrink == 2 ? k_->shrink2 : k_->shrink4;
 	const uint16_t *smoothedPlanes[3];
 	for (int c = 0; c < 3; c++) {
 		Plane<uint16_t> s = smoothed_[c].view(width, height);
@@ -36,8 +38,8 @@ void ChannelComputer::compute(const Plane<const uint16_t> luv[3], int width, int
 		else
 			for (int y = 0; y < height; y++)
 				std::copy(luv[c].row(y), luv[c].row(y) + width, s.row(y));
-		k_->shrink4(s.data, s.stride, width, height, out[c].data, out[c].stride,
-			    kernels::kLuvQ - kernels::kQ, rowTmp_.data());
+		shrink(s.data, s.stride, width, height, out[c].data, out[c].stride,
+		       kernels::kLuvQ - kernels::kQ, rowTmp_.data());
 		smoothedPlanes[c] = s.data;
 	}
 
@@ -57,15 +59,21 @@ void ChannelComputer::compute(const Plane<const uint16_t> luv[3], int width, int
 	}
 	// Normalisation already produced Q14; a raw magnitude is still Q16.
 	const int magShift = params_.gradNormRad > 0 ? 0 : kernels::kLuvQ - kernels::kQ;
-	k_->shrink4(mag.data, mag.stride, width, height, out[3].data, out[3].stride, magShift,
-		    rowTmp_.data());
+	shrink(mag.data, mag.stride, width, height, out[3].data, out[3].stride, magShift,
+	       rowTmp_.data());
 
 	uint16_t *hist[16];
 	for (int o = 0; o < params_.nOrients; o++)
 		hist[o] = out[4 + o].data;
-	k_->gradHist4(mag.data, orient.data, mag.stride, width, height,
-			       params_.nOrients, params_.softBin >= 0, hist, out[4].stride,
-			       rowTmp_.data());
+	// softBin >= 0 interpolates between orientations; odd softBin also between cells
+	// (only with shrink 2: Pyramid::init refuses it with 4).
+	if (params_.shrink == 2)
+		k_->gradHist2(mag.data, orient.data, mag.stride, width, height, params_.nOrients,
+			      params_.softBin >= 0, params_.softBin % 2 != 0, hist, out[4].stride,
+			      rowTmp_.data());
+	else
+		k_->gradHist4(mag.data, orient.data, mag.stride, width, height, params_.nOrients,
+			      params_.softBin >= 0, hist, out[4].stride, rowTmp_.data());
 }
 
 } // namespace calped

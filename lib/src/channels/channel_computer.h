@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // The toolbox's chnsCompute for one pyramid scale: from LUV planes at full resolution
 // to the ten aggregated channels (L, U, V, gradient magnitude, six orientations),
-// each a quarter of the size in both directions.
+// each 1/shrink of the size in both directions (shrink 4 or 2).
 #pragma once
 
 #include <calped/model.h>
@@ -20,8 +20,8 @@ public:
 	void init(const ModelParams &params, int maxWidth, int maxHeight,
 		  const kernels::KernelTable &k);
 
-	// luv: three Q16 planes of width x height (multiples of 4, within the maximum);
-	// out: ten planes of width/4 x height/4.
+	// luv: three Q16 planes of width x height (multiples of shrink, within the maximum);
+	// out: ten planes of width/shrink x height/shrink.
 	void compute(const Plane<const uint16_t> luv[3], int width, int height,
 		     const Plane<uint16_t> out[kChannelCount]);
 

@@ -17,6 +17,13 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	Status st = validateModel(model);
 	if (!st.ok())
 		return st;
+	// The LDCF filter stage (pyramid/ldcf_filter.h) exists, but the search and classifier
+	// do not read its half-size, 40-channel levels yet.
+	if (model.params.nFilters != 0)
+		return Status::error(ErrorCode::ModelUnsupported,
+				     "LDCF filters (%d of %dx%d per channel) are not run by the detector yet",
+				     int(model.params.nFilters), int(model.params.filterSize),
+				     int(model.params.filterSize));
 	st = cfg.validate();
 	if (!st.ok())
 		return st;

@@ -14,7 +14,7 @@ namespace calped {
 
 namespace {
 
-Status checkHeader(const uint8_t *data, size_t size, size_t &payloadSize)
+Status checkHeader(const uint8_t *data, size_t size, size_t &payloadSize, uint32_t &versionOut)
 {
 	if (size == 0)
 		return Status::error(ErrorCode::ModelTruncated, "the input is empty");
@@ -29,9 +29,11 @@ Status checkHeader(const uint8_t *data, size_t size, size_t &payloadSize)
 				     "%zu bytes, shorter than the %zu-byte header", size, blob::kHeaderSize);
 	// The version is read before anything else so a newer blob is reported as such.
 	const uint32_t version = readLe32(data + blob::kVersionOffset);
-	if (version != blob::kVersion)
+	if (version < blob::kOldestVersion || version > blob::kVersion)
 		return Status::error(ErrorCode::ModelBadVersion,
-				     "version = %u, this library reads version %u", version, blob::kVersion);
+				     "version = %u, this library reads versions %u to %u", version,
+				     blob::kOldestVersion, blob::kVersion);
+	versionOut = version;
 	if (size < blob::kHeaderSize)
 		return Status::error(ErrorCode::ModelTruncated,
 				     "%zu bytes, shorter than the %zu-byte header", size, blob::kHeaderSize);
@@ -43,7 +45,7 @@ Status checkHeader(const uint8_t *data, size_t size, size_t &payloadSize)
 				     actualHeaderCrc, headerCrc);
 	const uint32_t headerSize = readLe32(data + blob::kHeaderSizeOffset);
 	if (headerSize != blob::kHeaderSize)
-		return Status::error(ErrorCode::ModelInvalid, "headerSize = %u, version 1 requires %zu",
+		return Status::error(ErrorCode::ModelInvalid, "headerSize = %u, versions 1 and 2 require %zu",
 				     headerSize, blob::kHeaderSize);
 	const uint64_t declared = readLe64(data + blob::kPayloadSizeOffset);
 	const size_t present = size - blob::kHeaderSize;
@@ -66,7 +68,7 @@ Status checkHeader(const uint8_t *data, size_t size, size_t &payloadSize)
 	return Status::success();
 }
 
-bool readParams(ByteReader &r, ModelParams &p)
+bool readParams(ByteReader &r, uint32_t version, ModelParams &p)
 {
 	uint32_t dnm = 0;
 	const bool ok = r.f32(p.modelDsH) && r.f32(p.modelDsW) && r.i32(p.modelDsPadH) &&
@@ -80,6 +82,11 @@ bool readParams(ByteReader &r, ModelParams &p)
 			r.i32(p.pyramidSmooth) && r.f32(p.nmsOverlap) && r.u32(dnm);
 	// Out-of-range values survive the cast and are reported by validateModel.
 	p.nmsOverlapDenominator = static_cast<NmsOverlapDenominator>(dnm);
+	// Version 1 predates LDCF: no filters.
+	p.nFilters = 0;
+	p.filterSize = 0;
+	if (version >= 2)
+		return ok && r.i32(p.nFilters) && r.i32(p.filterSize);
 	return ok;
 }
 
@@ -91,15 +98,15 @@ void readArray(ByteReader &r, size_t n, std::vector<T> &out, Read read)
 		(r.*read)(out[i]); // cannot fail: the caller checked the remaining length
 }
 
-Status parsePayload(const uint8_t *payload, size_t size, Model &m)
+Status parsePayload(const uint8_t *payload, size_t size, uint32_t version, Model &m)
 {
 	ByteReader r(payload, size);
 	uint32_t nameLength = 0;
-	if (!readParams(r, m.params) || !r.i32(m.nTrees) || !r.i32(m.nodesPerTree) ||
+	if (!readParams(r, version, m.params) || !r.i32(m.nTrees) || !r.i32(m.nodesPerTree) ||
 	    !r.i32(m.treeDepth) || !r.u32(nameLength))
 		return Status::error(ErrorCode::ModelInvalid,
 				     "payload is %zu bytes, shorter than its %zu fixed bytes", size,
-				     blob::kFixedPayloadSize);
+				     version >= 2 ? blob::kFixedPayloadSize : blob::kFixedPayloadSizeV1);
 	if (nameLength > blob::kMaxNameLength)
 		return Status::error(ErrorCode::ModelInvalid, "name length = %u exceeds %u bytes",
 				     nameLength, blob::kMaxNameLength);
@@ -115,6 +122,20 @@ Status parsePayload(const uint8_t *payload, size_t size, Model &m)
 	if (m.nodesPerTree < 1 || m.nodesPerTree > blob::kMaxNodesPerTree)
 		return Status::error(ErrorCode::ModelInvalid, "nodesPerTree = %d must be in [1, %d]",
 				     m.nodesPerTree, blob::kMaxNodesPerTree);
+	// The filter shape is checked before its array is sized, as the tree shape below.
+	const ModelParams &p = m.params;
+	if (p.nFilters < 0 || p.nFilters > blob::kMaxFilters)
+		return Status::error(ErrorCode::ModelInvalid, "nFilters = %d must be in [0, %d]",
+				     p.nFilters, blob::kMaxFilters);
+	if (p.filterSize < 0 || p.filterSize > blob::kMaxFilterSize)
+		return Status::error(ErrorCode::ModelInvalid, "filterSize = %d must be in [0, %d]",
+				     p.filterSize, blob::kMaxFilterSize);
+	const size_t f = size_t(p.nFilters) * 10 * size_t(p.filterSize) * size_t(p.filterSize);
+	if (r.remaining() < f * 4)
+		return Status::error(ErrorCode::ModelInvalid,
+				     "filter weights (nFilters %d x 10 x %d x %d) run past the end of the payload",
+				     p.nFilters, p.filterSize, p.filterSize);
+	readArray(r, f, m.filters, &ByteReader::i32);
 	const size_t n = static_cast<size_t>(m.nTrees) * static_cast<size_t>(m.nodesPerTree);
 	if (r.remaining() != n * blob::kBytesPerNode)
 		return Status::error(ErrorCode::ModelInvalid,
@@ -135,12 +156,13 @@ Status loadModel(const uint8_t *data, size_t size, Model &out)
 	if (!data && size > 0)
 		return Status::error(ErrorCode::InvalidArgument, "data is null but size is %zu", size);
 	size_t payloadSize = 0;
-	Status s = checkHeader(data, size, payloadSize);
+	uint32_t version = 0;
+	Status s = checkHeader(data, size, payloadSize, version);
 	if (!s.ok())
 		return s;
 	try {
 		Model m;
-		s = parsePayload(data + blob::kHeaderSize, payloadSize, m);
+		s = parsePayload(data + blob::kHeaderSize, payloadSize, version, m);
 		if (s.ok())
 			s = validateModel(m);
 		if (s.ok())

@@ -44,6 +44,8 @@ void writeParams(ByteWriter &w, const ModelParams &p)
 	w.i32(p.pyramidSmooth);
 	w.f32(p.nmsOverlap);
 	w.u32(static_cast<uint32_t>(p.nmsOverlapDenominator));
+	w.i32(p.nFilters);
+	w.i32(p.filterSize);
 }
 
 } // namespace
@@ -57,11 +59,15 @@ std::vector<uint8_t> serializeModel(const Model &model)
 	if (model.fids.size() != n || model.thrs.size() != n || model.child.size() != n ||
 	    model.hs.size() != n)
 		return {};
+	const ModelParams &p = model.params;
+	if (p.nFilters < 0 || p.filterSize < 0 ||
+	    model.filters.size() != size_t(p.nFilters) * 10 * size_t(p.filterSize) * size_t(p.filterSize))
+		return {};
 
 	try {
 		std::vector<uint8_t> blob;
 		blob.reserve(blob::kHeaderSize + blob::kFixedPayloadSize + model.name.size() +
-			     n * blob::kBytesPerNode);
+			     4 * model.filters.size() + n * blob::kBytesPerNode);
 		blob.resize(blob::kHeaderSize); // filled in once the payload is known
 
 		ByteWriter w(blob);
@@ -71,6 +77,8 @@ std::vector<uint8_t> serializeModel(const Model &model)
 		w.i32(model.treeDepth);
 		w.u32(static_cast<uint32_t>(model.name.size()));
 		w.bytes(model.name.data(), model.name.size());
+		for (int32_t v : model.filters)
+			w.i32(v);
 		for (uint32_t v : model.fids)
 			w.u32(v);
 		for (int32_t v : model.thrs)

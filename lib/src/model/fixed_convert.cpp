@@ -37,4 +37,11 @@ int32_t leafValueToFixed(double value)
 	return clampToInt32(std::round(std::ldexp(value, kScoreFracBits)));
 }
 
+int32_t filterWeightToFixed(double value)
+{
+	if (std::isnan(value))
+		return 0;
+	return clampToInt32(std::round(std::ldexp(value, kFilterFracBits)));
+}
+
 } // namespace calped

@@ -14,4 +14,8 @@ namespace calped {
 // clamped to int32. NaN gives 0 (the converter refuses non-finite leaves before calling this).
 int32_t leafValueToFixed(double value);
 
+// LDCF filter weight in Q15 (kFilterFracBits): round(value * 2^15), halves away from zero,
+// clamped to int32 (validateModel then bounds it to [-2^15, 2^15]). NaN gives 0.
+int32_t filterWeightToFixed(double value);
+
 } // namespace calped

@@ -14,14 +14,26 @@
 
 namespace calped {
 
+int32_t Model::classifierShrink() const
+{
+	return params.nFilters > 0 ? 2 * params.shrink : params.shrink;
+}
+
+int32_t Model::classifierChannels() const
+{
+	return params.nFilters > 0 ? 10 * params.nFilters : 10;
+}
+
 int32_t Model::featureCount() const
 {
 	const ModelParams &p = params;
-	if (p.shrink <= 0 || p.modelDsPadH <= 0 || p.modelDsPadW <= 0)
+	const int32_t shrink = classifierShrink();
+	if (shrink <= 0 || p.modelDsPadH <= 0 || p.modelDsPadW <= 0 || p.nFilters < 0 ||
+	    p.nFilters > blob::kMaxFilters)
 		return 0;
-	// 3 LUV + 1 gradient magnitude + 6 orientation channels.
-	const int64_t count = static_cast<int64_t>(p.modelDsPadH / p.shrink) *
-			      (p.modelDsPadW / p.shrink) * 10;
+	// 3 LUV + 1 gradient magnitude + 6 orientation channels (each nFilters times for LDCF).
+	const int64_t count = static_cast<int64_t>(p.modelDsPadH / shrink) *
+			      (p.modelDsPadW / shrink) * classifierChannels();
 	if (count > std::numeric_limits<int32_t>::max())
 		return 0;
 	return static_cast<int32_t>(count);
@@ -117,6 +129,43 @@ Status validatePyramid(const ModelParams &p)
 		return invalidFloat("minDsW", p.minDsW, "must be in (0, 4096]");
 	if (!inRange(p.pyramidSmooth, 0, 16))
 		return invalid("pyramidSmooth", p.pyramidSmooth, "must be in [0, 16]");
+	return Status::success();
+}
+
+// LDCF's filters: shape, weights, and a window that is whole cells after the halving.
+Status validateFilters(const Model &m)
+{
+	const ModelParams &p = m.params;
+	if (!inRange(p.nFilters, 0, blob::kMaxFilters))
+		return invalid("nFilters", p.nFilters, "must be in [0, 16]");
+	if (p.nFilters == 0) {
+		if (p.filterSize != 0)
+			return invalid("filterSize", p.filterSize, "must be 0 when nFilters is 0");
+		if (!m.filters.empty())
+			return Status::error(ErrorCode::ModelInvalid,
+					     "filters has %zu weights but nFilters is 0", m.filters.size());
+		return Status::success();
+	}
+	if (!inRange(p.filterSize, 1, blob::kMaxFilterSize) || p.filterSize % 2 == 0)
+		return invalid("filterSize", p.filterSize, "must be odd, in [1, 15], with filters");
+	const size_t count = size_t(p.nFilters) * 10 * size_t(p.filterSize) * size_t(p.filterSize);
+	if (m.filters.size() != count)
+		return Status::error(ErrorCode::ModelInvalid,
+				     "filters has %zu weights, nFilters %d x 10 x %d x %d = %zu",
+				     m.filters.size(), p.nFilters, p.filterSize, p.filterSize, count);
+	for (size_t i = 0; i < count; i++)
+		if (!inRange(m.filters[i], -blob::kMaxFilterWeight, blob::kMaxFilterWeight))
+			return Status::error(ErrorCode::ModelInvalid,
+					     "filters[%zu] = %d is outside [-32768, 32768] (|weight| <= 1 in Q15)",
+					     i, m.filters[i]);
+	// The trees read cells of twice the shrink: the window and its stride must be whole ones.
+	const int32_t cell = 2 * p.shrink;
+	if (p.modelDsPadH % cell != 0)
+		return invalid("modelDsPadH", p.modelDsPadH, "must be a multiple of 2 * shrink with filters");
+	if (p.modelDsPadW % cell != 0)
+		return invalid("modelDsPadW", p.modelDsPadW, "must be a multiple of 2 * shrink with filters");
+	if (p.stride % cell != 0)
+		return invalid("stride", p.stride, "must be a multiple of 2 * shrink with filters");
 	return Status::success();
 }
 
@@ -231,6 +280,8 @@ Status validateModel(const Model &model)
 			s = validatePyramid(model.params);
 		if (s.ok())
 			s = validateNms(model.params);
+		if (s.ok())
+			s = validateFilters(model);
 		if (s.ok())
 			s = validateShape(model);
 		if (s.ok())

@@ -37,9 +37,10 @@ double groupPixels(const ModelParams &p, const ScaleList &scales, const CellRang
 	}
 	if (raw.empty())
 		return 0;
-	const CellRange chan = CellRange{ 4 * raw.begin - channelMargin, 4 * raw.end + channelMargin }
-				     .clipped(4 * real.height);
-	return double(chan.size()) * 4.0 * real.width;
+	const int s = p.shrink; // pixels per cell
+	const CellRange chan = CellRange{ s * raw.begin - channelMargin, s * raw.end + channelMargin }
+				     .clipped(s * real.height);
+	return double(chan.size()) * s * real.width;
 }
 
 } // namespace
@@ -62,8 +63,8 @@ bool choosePlacedLevels(const ModelParams &p, const ScaleList &scales, const Cel
 	std::vector<char> computable(size_t(n), 0);
 	for (int i = 0; i < n; i++) {
 		const PyramidLevel &l = scales.levels[i];
-		computable[i] = kernels::buildResampleTaps(imageWidth, 4 * l.width, 1.0, taps.data()) &&
-				kernels::buildResampleTaps(imageHeight, 4 * l.height, 1.0, taps.data());
+		computable[i] = kernels::buildResampleTaps(imageWidth, p.shrink * l.width, 1.0, taps.data()) &&
+				kernels::buildResampleTaps(imageHeight, p.shrink * l.height, 1.0, taps.data());
 	}
 
 	// Dynamic programming over the levels in order: best[j] is the least cost of levels

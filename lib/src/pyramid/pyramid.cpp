@@ -55,12 +55,13 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		return Status::error(ErrorCode::InvalidArgument,
 				     "pyramid upscale %g is outside [1, 8]", upscale);
 	upscale_ = upscale;
-	if (params.shrink != 4 || params.nOrients != 6 || params.gradFull != 0 ||
-	    params.gradColorChn != 0 || params.pyramidSmooth > 1 || params.colorSmooth > 1 ||
-	    params.histBinSize != params.shrink)
+	// LDCF's filters (params.nFilters) apply after the pyramid (pyramid/ldcf_filter.h).
+	if ((params.shrink != 4 && params.shrink != 2) || params.nOrients != 6 ||
+	    params.gradFull != 0 || params.gradColorChn != 0 || params.pyramidSmooth > 1 ||
+	    params.colorSmooth > 1 || params.histBinSize != params.shrink)
 		return Status::error(ErrorCode::ModelUnsupported,
-				     "calped implements shrink 4, 6 orientations in [0, pi), gradients "
-				     "over all colour channels and smoothing radius <= 1");
+				     "calped implements shrink 4 and 2, 6 orientations in [0, pi), "
+				     "gradients over all colour channels and smoothing radius <= 1");
 	// The normalisation's sums are uint32: (r+1)^4 * 65535 + its constant must fit.
 	const double weightSum = std::pow(params.gradNormRad + 1.0, 4.0);
 	if (params.gradNormRad > 15 ||
@@ -70,10 +71,11 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 				     "32-bit sums (radius <= 15)",
 				     int(params.gradNormRad), double(params.gradNormConst));
 	// Histograms interpolate between orientations (softBin 0) or not at all (-2); the
-	// toolbox's odd values also spread pixels over neighbouring cells.
-	if (params.softBin != 0 && params.softBin != -2)
+	// toolbox's odd values also spread pixels over neighbouring cells, which calped
+	// implements for 2x2 cells (Caltech+: softBin 1).
+	if (params.softBin % 2 != 0 && params.shrink != 2)
 		return Status::error(ErrorCode::ModelUnsupported,
-				     "softBin %d: calped implements 0 and -2 (no spatial interpolation)",
+				     "softBin %d (spatial interpolation) is implemented for shrink 2 only",
 				     int(params.softBin));
 	params_ = params;
 	maxWidth_ = maxWidth;
@@ -84,7 +86,8 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 	// A band of a level's LUV image gives exact channels in its rows but the margin: the
 	// colour smoothing and the gradient each reach one row, the normalisation gradNormRad
 	// rows. Rounded up to whole cells.
-	channelMargin_ = (params.gradNormRad + 2 + 3) / 4 * 4;
+	const int s = params.shrink; // pixels per cell
+	channelMargin_ = (params.gradNormRad + 2 + s - 1) / s * s;
 
 	try {
 		kernels::buildLuvTables(luvTables_);
@@ -97,8 +100,8 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 			halfLuv_[c].allocate(maxWidth / 2 + 4, maxHeight / 2 + 4);
 		}
 
-		maxLevelH_ = luvH / 4 + 2;
-		maxLevelW_ = luvW / 4 + 2;
+		maxLevelH_ = luvH / s + 2;
+		maxLevelW_ = luvW / s + 2;
 		// Computed levels shrink by 2 per octave: 4/3 of the first one's cells in all,
 		// plus room for the rounding of every level's size.
 		const size_t cells = size_t(maxLevelH_) * maxLevelW_;

@@ -37,8 +37,9 @@ void Pyramid::planRows(const CellRange *levelRows, int width, int height)
 		if (!l.computed)
 			continue;
 		LevelRows &r = rows_[i];
-		r.chan = CellRange{ 4 * r.raw.begin - channelMargin_, 4 * r.raw.end + channelMargin_ }
-				 .clipped(4 * l.height);
+		const int s = params_.shrink;
+		r.chan = CellRange{ s * r.raw.begin - channelMargin_, s * r.raw.end + channelMargin_ }
+				 .clipped(s * l.height);
 		if (r.raw.empty())
 			r.chan = CellRange();
 		r.luv = r.chan;
@@ -51,7 +52,7 @@ void Pyramid::planRows(const CellRange *levelRows, int width, int height)
 		const LevelRows &r = rows_[i];
 		if (!l.computed || r.luv.empty())
 			continue;
-		const int w1 = l.width * 4, h1 = l.height * 4;
+		const int w1 = l.width * params_.shrink, h1 = l.height * params_.shrink;
 		if (w1 == width && h1 == height) {
 			fullRows_.add(r.luv);
 			continue;
@@ -116,7 +117,7 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 		if (r.luv.empty())
 			continue;
 		const bool isHalf = i == halfLevel_;
-		const int w1 = l.width * 4, h1 = l.height * 4;
+		const int w1 = l.width * params_.shrink, h1 = l.height * params_.shrink;
 		Plane<uint16_t> in[3];
 		if (w1 == width && h1 == height) {
 			for (int c = 0; c < 3; c++)
@@ -144,7 +145,7 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 		Plane<uint16_t> out[kChannelCount];
 		planesAt(computedStore_.data() + offset - need, l.width, l.height, out);
 		for (int c = 0; c < kChannelCount; c++)
-			out[c].data = out[c].row(r.chan.begin / 4);
+			out[c].data = out[c].row(r.chan.begin / params_.shrink);
 		s.channels.compute(band, w1, r.chan.size(), out);
 		computedCount++;
 	}

@@ -17,7 +17,7 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 	// What each computed level must hold: the raw rectangles of its own level and the
 	// source rectangles of the levels approximated from it, merged. Merged rectangles
 	// stay at least a cell margin apart, so their channels' margins do not overlap much.
-	const int gap = 2 * channelMargin_ / 4;
+	const int gap = 2 * channelMargin_ / params_.shrink;
 	for (int i = 0; i < scales_.count; i++)
 		needCount_[i] = 0;
 	for (int k = 0; k < count; k++) {
@@ -104,8 +104,9 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 CellRange Pyramid::colourRows(int i, const LevelRect &r)
 {
 	const PyramidLevel &l = scales_.levels[i];
-	const int w1 = l.width * 4, h1 = l.height * 4;
-	const CellRange chan = CellRange{ 4 * r.rows.begin - channelMargin_, 4 * r.rows.end + channelMargin_ }
+	const int shrink = params_.shrink;
+	const int w1 = l.width * shrink, h1 = l.height * shrink;
+	const CellRange chan = CellRange{ shrink * r.rows.begin - channelMargin_, shrink * r.rows.end + channelMargin_ }
 				     .clipped(h1);
 	if (w1 == width_ && h1 == height_)
 		return chan;
@@ -116,26 +117,27 @@ CellRange Pyramid::colourRows(int i, const LevelRect &r)
 Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r, Scratch &s)
 {
 	const PyramidLevel &l = scales_.levels[i];
-	const int w1 = l.width * 4, h1 = l.height * 4;
+	const int w1 = l.width * params_.shrink, h1 = l.height * params_.shrink;
 	// The colour pixels with the channels' margin on every side (whole cells), computed
 	// into the approximation buffer (free between levels); only r is kept.
-	const CellRange chan = CellRange{ 4 * r.rows.begin - channelMargin_, 4 * r.rows.end + channelMargin_ }
+	const int shrink = params_.shrink;
+	const CellRange chan = CellRange{ shrink * r.rows.begin - channelMargin_, shrink * r.rows.end + channelMargin_ }
 				     .clipped(h1);
-	const CellRange chanCols = CellRange{ 4 * r.cols.begin - channelMargin_, 4 * r.cols.end + channelMargin_ }
+	const CellRange chanCols = CellRange{ shrink * r.cols.begin - channelMargin_, shrink * r.cols.end + channelMargin_ }
 					 .clipped(w1);
 	Plane<uint16_t> in[3];
 	const Status st = levelColour(input, i, chan, chanCols, in, s);
 	if (!st.ok())
 		return st;
 	Plane<uint16_t> scratch[kChannelCount];
-	planesAt(s.approx.data(), chanCols.size() / 4, chan.size() / 4, scratch);
+	planesAt(s.approx.data(), chanCols.size() / shrink, chan.size() / shrink, scratch);
 	Plane<const uint16_t> block[3];
 	for (int c = 0; c < 3; c++)
 		block[c] = { in[c].row(chan.begin) + chanCols.begin, chanCols.size(), chan.size(), in[c].stride };
 	s.channels.compute(block, chanCols.size(), chan.size(), scratch);
 	Plane<uint16_t> out[kChannelCount];
 	realLevelPlanes(i, out);
-	const int dy = chan.begin / 4, dx = chanCols.begin / 4;
+	const int dy = chan.begin / shrink, dx = chanCols.begin / shrink;
 	for (int c = 0; c < kChannelCount; c++)
 		for (int y = r.rows.begin; y < r.rows.end; y++)
 			std::memcpy(out[c].row(y) + r.cols.begin, scratch[c].row(y - dy) + (r.cols.begin - dx),
@@ -147,7 +149,7 @@ Status Pyramid::levelColour(FrameInput &input, int i, const CellRange &chan, con
 			   Plane<uint16_t> in[3], Scratch &s)
 {
 	const PyramidLevel &l = scales_.levels[i];
-	const int w1 = l.width * 4, h1 = l.height * 4;
+	const int w1 = l.width * params_.shrink, h1 = l.height * params_.shrink;
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width_, height_);

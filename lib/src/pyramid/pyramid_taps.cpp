@@ -16,13 +16,13 @@ bool Pyramid::tapSpec(const ScaleList &scales, int width, int height, int i, int
 	const PyramidLevel &l = scales.levels[i];
 	gain = 1.0;
 	if (l.computed) {
-		const int w1 = l.width * 4, h1 = l.height * 4;
+		const int w1 = l.width * params_.shrink, h1 = l.height * params_.shrink;
 		if ((w1 == width && h1 == height) || kind > kTapsY)
 			return false; // the image itself
 		const int half = halfLevelOf(params_, scales);
 		const bool fromHalf = half >= 0 && i > half;
-		const int srcW = fromHalf ? scales.levels[half].width * 4 : width;
-		const int srcH = fromHalf ? scales.levels[half].height * 4 : height;
+		const int srcW = fromHalf ? scales.levels[half].width * params_.shrink : width;
+		const int srcH = fromHalf ? scales.levels[half].height * params_.shrink : height;
 		n = kind == kTapsX ? srcW : srcH;
 		m = kind == kTapsX ? w1 : h1;
 		return true;

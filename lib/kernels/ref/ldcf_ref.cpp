@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// LDCF's decorrelation filter, the reference: Matlab's conv2(C, f, 'same') of one Q14
+// channel with a Q15 filter, zero outside the plane, into biased Q12.
+#include "kernels.h"
+#include "fixed_point.h"
+
+namespace calped {
+namespace kernels {
+
+void ldcfFilter_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		    const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride)
+{
+	const int r = size / 2;
+	// Q14 x Q15 = Q29 sums; down to Q12.
+	const int shift = kQ + 15 - kLdcfQ;
+	for (int y = 0; y < height; y++)
+		for (int x = 0; x < width; x++) {
+			int64_t acc = 0;
+			// A convolution: filter tap (a, b) meets sample (y + r - a, x + r - b).
+			for (int a = 0; a < size; a++) {
+				const int sy = y + r - a;
+				if (sy < 0 || sy >= height)
+					continue;
+				for (int b = 0; b < size; b++) {
+					const int sx = x + r - b;
+					if (sx < 0 || sx >= width)
+						continue;
+					acc += int64_t(filter[a * size + b]) * src[sy * srcStride + sx];
+				}
+			}
+			dst[y * dstStride + x] = saturateU16(shiftRound(acc, shift) + kLdcfBias);
+		}
+}
+
+} // namespace kernels
+} // namespace calped
