@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "json_frame.h"
 
+#include "excerpt.h" // utf8CharLength: the one UTF-8 check
+
 #include <algorithm>
 #include <cinttypes>
 #include <cstdarg>
@@ -10,40 +12,6 @@
 namespace calped::apps {
 
 namespace {
-
-// Length of the valid UTF-8 sequence at s[0] (RFC 3629: no overlongs, no surrogates, at
-// most U+10FFFF), or 0 when the bytes there are not one.
-size_t utf8Length(const unsigned char *s, size_t left)
-{
-	const unsigned char c = s[0];
-	size_t n;
-	unsigned char lo = 0x80, hi = 0xbf;
-	if (c < 0x80)
-		return 1;
-	if (c >= 0xc2 && c <= 0xdf) {
-		n = 2;
-	} else if (c >= 0xe0 && c <= 0xef) {
-		n = 3;
-		if (c == 0xe0)
-			lo = 0xa0;
-		if (c == 0xed)
-			hi = 0x9f;
-	} else if (c >= 0xf0 && c <= 0xf4) {
-		n = 4;
-		if (c == 0xf0)
-			lo = 0x90;
-		if (c == 0xf4)
-			hi = 0x8f;
-	} else {
-		return 0;
-	}
-	if (left < n || s[1] < lo || s[1] > hi)
-		return 0;
-	for (size_t i = 2; i < n; i++)
-		if (s[i] < 0x80 || s[i] > 0xbf)
-			return 0;
-	return n;
-}
 
 // Calls out(piece, length) for each piece of the escaped string, quotes excluded.
 template <typename Out>
@@ -68,7 +36,7 @@ void escape(const char *text, size_t size, Out out)
 			}
 			i++;
 		} else {
-			const size_t n = utf8Length(s + i, size - i);
+			const size_t n = utf8CharLength(s + i, size - i);
 			if (n == 0) {
 				out("\xef\xbf\xbd", 3); // U+FFFD REPLACEMENT CHARACTER, for one bad byte
 				i++;
