@@ -19,9 +19,8 @@ Status Pyramid::allocateScratch(Scratch &s, int luvW, int luvH, int maxWidth)
 		s.levelLuv[c].allocate(luvW, luvH);
 	s.resampleTmp.allocate(std::max(luvW, maxWidth_), std::max(luvH, maxHeight_));
 	const size_t taps = size_t(std::max(luvW, luvH)) + 8;
-	s.xTaps.resize(taps);
-	s.yTaps.resize(taps);
-	s.yTapsGain.resize(taps);
+	for (auto &kind : s.taps)
+		kind.resize(taps);
 	s.yTapsBand.resize(taps * kMaxTapSets);
 	s.approx.allocate(maxLevelW_, maxLevelH_ * kChannelCount);
 	s.levelBuf.allocate(int(planeStride_), kChannelCount);

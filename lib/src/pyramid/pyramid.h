@@ -135,7 +135,10 @@ private:
 		PlaneBuffer<uint16_t> approx;      // channels of one approximated level (or rectangle)
 		PlaneBuffer<uint16_t> levelBuf;    // smoothed and padded level for the classifier
 		PlaneBuffer<uint8_t> strip;        // RGB rows of a non-RGB8 frame
-		std::vector<kernels::ResampleTap> xTaps, yTaps, yTapsGain, yTapsBand;
+		// Taps built per frame for frames smaller than the maximum, one buffer per kind
+		// (kTapsX, kTapsY + channel type: each type has its own gain).
+		std::vector<kernels::ResampleTap> taps[4];
+		std::vector<kernels::ResampleTap> yTapsBand;
 		std::vector<uint32_t> rowTmp;
 		double msApprox = 0, msSmooth = 0;
 	};
@@ -169,6 +172,7 @@ private:
 	// type's gain for approximated levels; kTapsY + t for channel type t), from the
 	// image or half image (computed levels) or the computed source level (approximated).
 	enum { kTapsX = 0, kTapsY = 1, kTapKinds = 4 };
+	static_assert(kTapKinds == sizeof(Scratch::taps) / sizeof(Scratch::taps[0]), "one buffer per kind");
 	bool tapSpec(const ScaleList &scales, int width, int height, int i, int kind, int &n, int &m,
 		     double &gain) const;
 	// Builds every level's taps for maximum-size frames (setup time); false if some

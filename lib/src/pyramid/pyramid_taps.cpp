@@ -82,8 +82,9 @@ const kernels::ResampleTap *Pyramid::levelTaps(int i, int kind, Scratch &s)
 	double gain;
 	if (!tapSpec(scales_, width_, height_, i, kind, n, m, gain))
 		return nullptr;
-	kernels::ResampleTap *out = kind == kTapsX ? s.xTaps.data() : kind == kTapsY ? s.yTaps.data()
-										: s.yTapsGain.data();
+	// Its own buffer per kind: a level's channel types are resampled together, each with
+	// its own gain (one buffer for both gradient types gave the magnitude the histograms' gain).
+	kernels::ResampleTap *out = s.taps[kind].data();
 	return kernels::buildResampleTaps(n, m, gain, out) ? out : nullptr;
 }
 
