@@ -106,6 +106,7 @@ if "${tsan_setup[@]}" -Dbuildtype=debugoptimized -Db_sanitize=thread -Db_lundef=
 else
 	failed_steps+=("tsan build")
 fi
+step_done tsan
 
 # Every fuzz target briefly, on its seeds and what earlier runs found: one junit case each.
 echo
