@@ -38,9 +38,11 @@ std::string stbReason()
 {
 	const char *r = stbi_failure_reason();
 	const std::string reason = r ? std::string(r).substr(0, 80) : std::string();
+	// stb's reasons are short ASCII words; anything else (the fuzzer saw raw high bytes
+	// through a stale reason) is not quoted.
 	bool printable = !reason.empty();
 	for (char c : reason)
-		printable = printable && static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+		printable = printable && static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f;
 	return printable ? reason : "corrupt or unsupported image data";
 }
 
