@@ -70,6 +70,10 @@ for t in "${targets[@]}"; do
 	if [[ -d tests/fuzz/regressions/$t ]]; then
 		cp -n tests/fuzz/regressions/"$t"/* "$work/corpus/" 2>/dev/null || true
 	fi
+	# The .mat reader's seeds are the toolbox's models, read from ../shared (not in the tree).
+	if [[ $t == mat ]]; then
+		cp -n "${CALPED_SHARED_DIR:-../shared}"/models/dollar-toolbox/*.mat "$work/corpus/" 2>/dev/null || true
+	fi
 	dict=()
 	[[ -f tests/fuzz/dict/$t.dict ]] && dict=(-dict=tests/fuzz/dict/$t.dict)
 	echo "=== fuzz $t: ${limit[*]}"
