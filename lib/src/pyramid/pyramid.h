@@ -212,14 +212,20 @@ private:
 	int doneNext_[kMaxLevels] = {};
 	LevelRect needRects_[kMaxLevels][kMaxRects];
 	int needCount_[kMaxLevels] = {};
-	// computeRects(): the rectangles still to compute (level, index into needRects_),
-	// largest first, and each one's outcome.
+	// computeRects(): the rectangles still to compute (level, index into needRects_, the
+	// rows of it this task computes: all of them, or a piece when the rectangle is split
+	// over the threads), largest first, and each one's outcome.
 	struct RectTask {
 		int level, index;
+		CellRange rows;
 		long cells;
 	};
-	RectTask tasks_[kMaxLevels * kMaxRects];
-	bool taskFailed_[kMaxLevels * kMaxRects];
+	static constexpr int kMaxRectPieces = 64; // tasks added by splitting, per frame demand
+	RectTask tasks_[kMaxLevels * kMaxRects + kMaxRectPieces];
+	bool taskFailed_[kMaxLevels * kMaxRects + kMaxRectPieces];
+	// Cuts the largest tasks into row pieces until each is at most about 1/(2 workers) of
+	// the whole: one rectangle can be most of a frame's work.
+	int splitRectTasks(int tasks);
 	CellRange fullRows_; // rows of the whole-image LUV planes the levels read
 	int halfLevel_ = -1; // the computed level at scale 1/2, source of smaller octaves
 	int frameDemands_ = 0; // compute() calls since beginFrame()

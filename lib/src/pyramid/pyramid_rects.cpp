@@ -59,34 +59,42 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 			if (rows.empty() && !r.empty())
 				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 			colour.add(rows);
-			tasks_[tasks++] = RectTask{ i, k, long(r.rows.size()) * r.cols.size() };
+			tasks_[tasks++] = RectTask{ i, k, r.rows, long(r.rows.size()) * r.cols.size() };
 		}
 	convertLuvRows(input, colour);
+	tasks = splitRectTasks(tasks);
 	// Largest first, so that the threads finish together; each rectangle is computed
 	// into its own cells of the store, the same on any thread.
 	// (std::sort: stable_sort may allocate.)
 	std::sort(tasks_, tasks_ + tasks, [](const RectTask &a, const RectTask &b) {
 		if (a.cells != b.cells)
 			return a.cells > b.cells;
-		return a.level != b.level ? a.level < b.level : a.index < b.index;
+		if (a.level != b.level)
+			return a.level < b.level;
+		return a.index != b.index ? a.index < b.index : a.rows.begin < b.rows.begin;
 	});
 	auto one = [&](int t, int worker) {
 		const RectTask &task = tasks_[t];
-		taskFailed_[t] = !computeRect(input, task.level, needRects_[task.level][task.index],
-					      *scratch_[size_t(worker)]).ok();
+		const LevelRect piece{ task.rows, needRects_[task.level][task.index].cols };
+		taskFailed_[t] = !computeRect(input, task.level, piece, *scratch_[size_t(worker)]).ok();
 	};
 	forEachTask(pool_, tasks, one);
 	for (int t = 0; t < tasks; t++)
 		if (taskFailed_[t])
 			return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 	// Remember them, in the order of the levels (the oldest is forgotten when the list
-	// is full: computed again if asked for again).
+	// is full: computed again if asked for again). The pieces are done with their
+	// rectangle: its first piece names it.
 	std::sort(tasks_, tasks_ + tasks, [](const RectTask &a, const RectTask &b) {
-		return a.level != b.level ? a.level < b.level : a.index < b.index;
+		if (a.level != b.level)
+			return a.level < b.level;
+		return a.index != b.index ? a.index < b.index : a.rows.begin < b.rows.begin;
 	});
 	for (int t = 0; t < tasks; t++) {
 		const int i = tasks_[t].level;
 		const LevelRect &r = needRects_[i][tasks_[t].index];
+		if (tasks_[t].rows.begin != r.rows.begin)
+			continue;
 		if (doneCount_[i] == 0 && rows_[i].chan.empty())
 			computedCount++;
 		if (doneCount_[i] < kMaxRects) {
@@ -99,6 +107,37 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 	}
 	msChannels += msSince(t0);
 	return Status::success();
+}
+
+int Pyramid::splitRectTasks(int tasks)
+{
+	const int threads = workers();
+	if (threads == 1 || tasks == 0)
+		return tasks;
+	long total = 0;
+	for (int t = 0; t < tasks; t++)
+		total += tasks_[t].cells;
+	const long share = (total + 2 * threads - 1) / (2 * threads);
+	// A piece of fewer rows would compute more margin than cells.
+	const int minRows = std::max(4, 8 * channelMargin_ / params_.shrink);
+	const int originals = tasks;
+	for (int t = 0; t < originals; t++) {
+		RectTask &task = tasks_[t];
+		const int rows = task.rows.size();
+		const long perRow = task.cells / std::max(1, rows);
+		int pieces = int(std::min<long>((task.cells + share - 1) / share, rows / minRows));
+		pieces = std::min(pieces, 1 + kMaxRectPieces - (tasks - originals));
+		if (pieces < 2)
+			continue;
+		const CellRange all = task.rows;
+		for (int p = 0; p < pieces; p++) {
+			const CellRange piece{ all.begin + int(long(rows) * p / pieces),
+					       all.begin + int(long(rows) * (p + 1) / pieces) };
+			RectTask &to = p == 0 ? task : tasks_[tasks++];
+			to = RectTask{ task.level, task.index, piece, perRow * piece.size() };
+		}
+	}
+	return tasks;
 }
 
 CellRange Pyramid::colourRows(int i, const LevelRect &r)

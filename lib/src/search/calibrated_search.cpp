@@ -128,8 +128,13 @@ Status CalibratedSearch::run(FrameInput &input, Pyramid &pyramid, const Classifi
 		for (int i = 0; i < levels_; i++)
 			if (levelNeeded_[i])
 				passLevels_[count++] = i;
+		long cost[kMaxLevels];
+		for (int t = 0; t < count; t++)
+			cost[t] = long(plan_.windowCount(passLevels_[t]));
+		orderPassLevels(count, cost);
 		out.emptyLanes();
-		auto one = [&](int t, int worker) {
+		auto one = [&](int task, int worker) {
+			const int t = passOrder_[task];
 			const int i = passLevels_[t];
 			LevelWork &work = work_[t];
 			const LevelChannels level = pyramid.prepare(i, nullptr, 0, worker);
@@ -188,8 +193,22 @@ Status CalibratedSearch::pass(FrameInput &input, Pyramid &pyramid, const Classif
 	for (int i = 0; i < levels_; i++)
 		if (levelNeeded_[i])
 			passLevels_[count++] = i;
+	// The cost of a level: the cells it prepares (with rectangles) or the windows it
+	// may classify.
+	long cost[kMaxLevels];
+	for (int t = 0; t < count; t++) {
+		const int i = passLevels_[t];
+		cost[t] = long(sparseCount_[i]);
+		if (rectsPerFrame_) {
+			cost[t] = 0;
+			for (int k = 0; k < levelRectCount_[i]; k++)
+				cost[t] += long(levelRects_[i][k].rows.size()) * levelRects_[i][k].cols.size();
+		}
+	}
+	orderPassLevels(count, cost);
 	out.emptyLanes();
-	auto one = [&](int t, int worker) {
+	auto one = [&](int task, int worker) {
+		const int t = passOrder_[task];
 		work_[t] = LevelWork();
 		passLevel(passLevels_[t], worker, pyramid, classifier, out, firstRegion, sparse, work_[t]);
 	};
@@ -206,6 +225,15 @@ Status CalibratedSearch::pass(FrameInput &input, Pyramid &pyramid, const Classif
 			stats.levels++;
 	}
 	return Status::success();
+}
+
+void CalibratedSearch::orderPassLevels(int count, const long *cost)
+{
+	for (int t = 0; t < count; t++)
+		passOrder_[t] = t;
+	std::sort(passOrder_, passOrder_ + count, [cost](int a, int b) {
+		return cost[a] != cost[b] ? cost[a] > cost[b] : a < b;
+	});
 }
 
 void CalibratedSearch::passLevel(int i, int worker, Pyramid &pyramid, const Classifier &classifier,

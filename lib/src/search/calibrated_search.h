@@ -103,8 +103,12 @@ private:
 	std::vector<uint8_t> evaluated_; // per plan window grid: evaluated this frame
 	ThreadPool *pool_ = nullptr;
 	std::vector<std::vector<uint32_t>> frameLists_; // a window list per thread
+	// A pass's levels in level order (its results are gathered in that order), and the
+	// order the threads take them in: costliest first, so that they finish together.
 	int passLevels_[kMaxLevels] = {};
+	int passOrder_[kMaxLevels] = {};
 	LevelWork work_[kMaxLevels];
+	void orderPassLevels(int count, const long *cost);
 	std::vector<int> order_; // candidates best first, for new regions
 };
 
