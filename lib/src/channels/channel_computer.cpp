@@ -10,7 +10,7 @@ void ChannelComputer::init(const ModelParams &params, int maxWidth, int maxHeigh
 {
 	params_ = params;
 	k_ = &k;
-	triScratch_.assign(kernels::triSumScratchSize(maxWidth, maxHeight, params.gradNormRad), 0);
+	triScratch_.allocate(int(kernels::triSumScratchSize(maxWidth, maxHeight, params.gradNormRad)), 1);
 	kernels::buildGradientTables(grad_, params.nOrients, params.gradNormRad,
 				     params.gradNormConst);
 	for (auto &p : smoothed_)

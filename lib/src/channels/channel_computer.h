@@ -34,7 +34,7 @@ private:
 	PlaneBuffer<uint16_t> mag_, orient_;
 	PlaneBuffer<uint32_t> magSum_;
 	std::vector<uint32_t> rowTmp_;
-	std::vector<uint32_t> triScratch_;
+	PlaneBuffer<uint32_t> triScratch_; // zero pages until a block reaches them
 	std::vector<int32_t> gradScratch_;
 };
 

@@ -104,7 +104,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		// Computed levels shrink by 2 per octave: 4/3 of the first one's cells in all,
 		// plus room for the rounding of every level's size.
 		const size_t cells = size_t(maxLevelH_) * maxLevelW_;
-		computedStore_.assign(kChannelCount * (cells * 4 / 3 + size_t(kMaxLevels) * (maxLevelH_ + maxLevelW_ + 4)), 0);
+		computedStore_.allocate(int(kChannelCount * (cells * 4 / 3 + size_t(kMaxLevels) * (maxLevelH_ + maxLevelW_ + 4))), 1);
 		rowStride_ = maxLevelW_ + 2 * padW_;
 		planeStride_ = rowStride_ * (maxLevelH_ + 2 * padH_);
 		// One scratch set per thread; untouched pages of the others cost no memory.
@@ -164,8 +164,8 @@ Status Pyramid::placeLevels(const int *source, int count)
 		if (scales.levels[i].computed)
 			need += size_t(kChannelCount) * scales.levels[i].width * scales.levels[i].height;
 	try {
-		if (need > computedStore_.size())
-			computedStore_.assign(need, 0);
+		if (need > computedStore_.capacity())
+			computedStore_.allocate(int(need), 1);
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory, "channels of the placed levels");
 	}

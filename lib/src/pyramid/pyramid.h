@@ -246,7 +246,7 @@ private:
 	bool tapsCached_ = false;
 
 	// Raw (unsmoothed, unpadded) channels of every computed level, back to back.
-	std::vector<uint16_t> computedStore_;
+	PlaneBuffer<uint16_t> computedStore_; // zero pages until a level's cells are written
 	size_t realOffset_[kMaxLevels] = {};
 	ptrdiff_t rowStride_ = 0, planeStride_ = 0;
 	int maxLevelH_ = 0, maxLevelW_ = 0;

@@ -110,7 +110,7 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 		// Every computed level keeps its place in the store, so offsets do not depend
 		// on which rows a frame needs.
 		const size_t need = size_t(kChannelCount) * l.width * l.height;
-		if (offset + need > computedStore_.size())
+		if (offset + need > computedStore_.capacity())
 			return Status::error(ErrorCode::ImageTooLarge, "channels of level %d do not fit", i);
 		realOffset_[i] = offset;
 		offset += need;
