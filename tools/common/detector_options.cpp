@@ -34,8 +34,11 @@ int DetectorOptions::detectorThreads() const
 {
 	if (threads > 0)
 		return int(threads);
+	// The online cores, at most 4: a camera board has four, and each thread reserves its
+	// own scratch (DetectorConfig::memoryBudgetBytes counts it) for a frame's few large
+	// sections, which more threads split no further.
 	const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-	return int(std::clamp(cores, 1L, 64L));
+	return int(std::clamp(cores, 1L, 4L));
 }
 
 std::vector<OptionSpec> detectorOptionTable(DetectorFlags which)
@@ -59,8 +62,8 @@ std::vector<OptionSpec> detectorOptionTable(DetectorFlags which)
 	t.push_back({ "resize-at", "WHERE", "pyramid (default): the resize inside the feature pyramid\n"
 					    "(the toolbox's nOctUp); frame: resize the frame first,\n"
 					    "as the thesis does (the default when R < 1)" });
-	t.push_back({ "threads", "N", "threads the detector works on, 1..64 (default: the number\n"
-				      "of online cores); the detections do not depend on it" });
+	t.push_back({ "threads", "N", "threads the detector works on, 1..64 (default: the online\n"
+				      "cores, at most 4); the detections do not depend on it" });
 	t.push_back({ "levels", "L", "calibrated method: placed (default) computes channels at\n"
 				     "levels placed among the needed ones; toolbox: the toolbox's\n"
 				     "octaves (the default when the frame is resized first)" });

@@ -38,9 +38,9 @@ struct DetectorOptions {
 	bool scoreRatio = false;
 	long regionFrames = 0; // 0: the library's default
 	double minScore = -INFINITY; // --min-score: output filter, not a detector setting
-	long threads = 0;            // --threads N; 0: the number of online cores (threads())
+	long threads = 0;            // --threads N; 0: the online cores, at most 4
 
-	// The detector's threads: --threads, else the online cores (at most 64).
+	// The detector's threads: --threads, else the online cores (at most 4).
 	int detectorThreads() const;
 
 	// What the defaults resolve to (after checkDetectorOptions).

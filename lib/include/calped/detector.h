@@ -112,9 +112,10 @@ struct DetectorConfig {
 	bool nms = true;
 	// Most memory create() may set aside for the frame-sized buffers, bytes (0: no limit).
 	// The need is estimated from the model and the frame size before anything is
-	// allocated (the largest pyramid image is the frame at resize * 2^nOctUp: about 40
-	// bytes per pixel of it); beyond the budget create() returns OutOfMemory with both
-	// numbers. The default, 1 GiB, takes a 1920x1080 frame at resize 3.5 with the INRIA model.
+	// allocated (the largest pyramid image is the frame at resize * 2^nOctUp: about 12
+	// bytes per pixel of it, plus 28 per thread); beyond the budget create() returns
+	// OutOfMemory with both numbers. The default, 1 GiB, takes a 1920x1080 frame with the
+	// INRIA model at resize 3.5 on one thread, at resize 2 on four.
 	uint64_t memoryBudgetBytes = uint64_t(1) << 30;
 	// Threads detect() works on, the calling one included: 1..64. create() starts
 	// threads - 1 workers once; each frame splits its colour conversion, the computed
