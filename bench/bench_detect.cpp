@@ -142,8 +142,9 @@ int main(int argc, char **argv)
 
 	// Static rejection (--reject-static) needs consecutive frames of one camera.
 	std::unique_ptr<Detector> det;
+	std::string resizeNote; // --resize auto (the default with --calib): the resize chosen
 	if (!apps::createDetector(loaded.model, options, frames[0].width, frames[0].height,
-				  loaded.hasCamera ? &loaded.camera : nullptr, det, error)) {
+				  loaded.hasCamera ? &loaded.camera : nullptr, det, error, &resizeNote)) {
 		std::fprintf(stderr, "bench_detect: %s\n", error.c_str());
 		return 1;
 	}
@@ -173,9 +174,16 @@ int main(int argc, char **argv)
 			computed = s.computedLevels;
 		}
 	const double n = double(total.size());
-	std::printf("%s %s, frames %zu x %ld, %dx%d, resize %.2f: %d levels (%d computed), %.0f windows/frame, %.2f detections/frame\n",
+	if (!resizeNote.empty())
+		std::printf("%s\n", resizeNote.c_str());
+	char resizeText[32];
+	if (resizeNote.empty())
+		std::snprintf(resizeText, sizeof resizeText, "%.2f", options.resize);
+	else
+		std::snprintf(resizeText, sizeof resizeText, "auto");
+	std::printf("%s %s, frames %zu x %ld, %dx%d, resize %s: %d levels (%d computed), %.0f windows/frame, %.2f detections/frame\n",
 		    calibrated ? "calibrated" : "generic", pixelFormatName(format), frames.size(), repeat, frames[0].width,
-		    frames[0].height, options.resize, levels, computed,
+		    frames[0].height, resizeText, levels, computed,
 		    windows / n, detections / n);
 	std::printf("ms per frame      median   mean\n");
 	std::printf("  total          %7.2f %7.2f\n", median(total), mean(total));

@@ -6,8 +6,11 @@
 # run's CSV must be byte-identical to one thread's (cmp). Prints, per thread count, the
 # run's frames per second (wall clock, decoding included: with --threads above 1 the next
 # PNG decodes while the current frame is detected), the detector's own mean ms per frame,
-# the summed user and system CPU seconds, and the speed-ups over one thread. Builds
-# nothing; wall-clock numbers are only meaningful on an otherwise idle machine.
+# the summed user and system CPU seconds, and the speed-ups over one thread. Then the
+# detector alone: build/bench/bench_detect with the same flags over the same frames decoded
+# into memory first (no PNG decoding beside it), median ms per frame and its speed-up, one
+# thread count after the other in the same run. Builds nothing; wall-clock numbers are
+# only meaningful on an otherwise idle machine.
 #   bash bench/threads.sh [FRAMES] [THREADS...]   (default: all 795 frames; 1 2 3 4)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -58,4 +61,21 @@ for n in "${counts[@]}"; do
 	awk -v n="$n" -v fps="$fps" -v bf="$base_fps" -v ms="$ms" -v bm="$base_ms" -v cpu="$cpu" -v same="$same" \
 		'BEGIN { printf "| %s | %.2f | %.2fx | %.2f | %.2fx | %s | %s |\n", n, fps, fps / bf, ms, bm / ms, cpu, same }'
 done
+
+bench=${CALPED_BUILD_DIR:-build}/bench/bench_detect
+if [[ -x $bench ]]; then
+	echo
+	echo "The detector alone (bench_detect, frames 1-$frames in memory, median of the frames):"
+	echo
+	echo "| threads | ms/frame | frames/s | speed-up |"
+	echo "|---:|---:|---:|---:|"
+	base=
+	for n in "${counts[@]}"; do
+		ms=$("$bench" --model "$model" --calib "$calib" --threads "$n" --frames data/pets/frames \
+			--count "$frames" | awk '$1 == "total" { print $2 }')
+		[[ -n $base ]] || base=$ms
+		awk -v n="$n" -v ms="$ms" -v b="$base" \
+			'BEGIN { printf "| %s | %.2f | %.1f | %.2fx |\n", n, ms, 1000 / ms, b / ms }'
+	done
+fi
 exit $status
