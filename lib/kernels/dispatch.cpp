@@ -75,6 +75,7 @@ const KernelTable &avx2Kernels()
 		t.shrink4 = shrink4_avx2;
 		t.scanDepth2 = scanDepth2_avx2;
 		t.scanDepth2List = scanDepth2List_avx2;
+		t.ldcfFilter = ldcfFilter_avx2;
 		return t;
 	}();
 	return table;
