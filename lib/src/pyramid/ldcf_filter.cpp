@@ -67,15 +67,14 @@ Status LdcfFilter::init(const Model &model, int maxHeight, int maxWidth, const k
 	return Status::success();
 }
 
-uint64_t LdcfFilter::bytesFor(int nFilters, int maxHeight, int maxWidth)
+uint64_t LdcfFilter::bytesFor(int nFilters, uint64_t maxHeight, uint64_t maxWidth)
 {
-	const uint64_t full = uint64_t(maxHeight) * maxWidth;
-	const uint64_t half = uint64_t(halfSize(maxHeight)) * halfSize(maxWidth);
-	const uint64_t taps = uint64_t(2 * halfSize(maxWidth) + 2 * halfSize(maxHeight) + 4) *
-			      sizeof(kernels::ResampleTap);
-	return 2 * (full + uint64_t(halfSize(maxWidth)) * maxHeight +
-		    half * uint64_t(kChannelCount) * uint64_t(nFilters)) +
-	       taps;
+	// As init() sizes them: the filtered level and the row pass (uint16), the half-size
+	// output planes, and four tap arrays.
+	const uint64_t halfH = (maxHeight + 1) / 2, halfW = (maxWidth + 1) / 2;
+	const uint64_t planes = maxHeight * maxWidth + halfW * maxHeight +
+				halfH * halfW * uint64_t(kChannelCount) * uint64_t(nFilters);
+	return 2 * planes + (2 * halfW + 2 * halfH + 4) * sizeof(kernels::ResampleTap);
 }
 
 LevelChannels LdcfFilter::apply(const LevelChannels &level, const LevelRect *rects, int count,

@@ -50,7 +50,7 @@ public:
 	ptrdiff_t rowStride() const { return rowStride_; }
 	ptrdiff_t planeStride() const { return planeStride_; }
 	// Bytes init() allocates for levels of maxHeight x maxWidth (memory estimates).
-	static uint64_t bytesFor(int nFilters, int maxHeight, int maxWidth);
+	static uint64_t bytesFor(int nFilters, uint64_t maxHeight, uint64_t maxWidth);
 
 private:
 	// One rectangle of exact input (padded rows `rows`, columns `cols` of the h x w level).
