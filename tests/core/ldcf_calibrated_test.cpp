@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // The calibrated method with LDCF: every window it classifies, in rectangles of placed
-// levels (each grown by what the filter stage reads), scores exactly what the same window
-// scores on the whole level computed and filtered in full.
+// levels (each grown by what the filter stage reads) or in the plan's bands, scores exactly
+// what the same window scores on the whole level computed and filtered in full.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -66,11 +66,15 @@ TEST(LdcfCalibrated, WindowScoresEqualTheFullLevels)
 	cfg.calibrated = CalibratedSettings();
 	cfg.calibrated->levels = PyramidLevels::Placed;
 	cfg.calibrated->boxVoting = false;
-	std::unique_ptr<Detector> det;
+	// Rectangles around each pass's windows, and the plan's bands demanded once a frame
+	// (prepared in the rows and columns the windows read).
+	std::unique_ptr<Detector> det, bands;
 	Status st = Detector::create(model, cfg, det);
 	ASSERT_TRUE(st.ok()) << st.message();
+	ASSERT_TRUE(Detector::create(model, cfg, bands).ok());
 	DetectorImpl &impl = DetectorInternals::of(*det);
 	ASSERT_TRUE(impl.calibratedSearch.rectsPerFrame());
+	DetectorInternals::of(*bands).calibratedSearch.setRectsPerFrame(false);
 
 	// The reference: the same placed levels, computed whole, filtered whole.
 	ScaleList placed;
@@ -86,24 +90,28 @@ TEST(LdcfCalibrated, WindowScoresEqualTheFullLevels)
 	size_t compared = 0;
 	for (uint32_t seed = 0; seed < 3; seed++) {
 		const std::vector<uint8_t> frame = test::randomImage(seed, w, h);
-		Detections d;
-		st = det->detect(ImageView::rgb8(frame.data(), w, h), d);
-		ASSERT_TRUE(st.ok()) << st.message();
-		ASSERT_EQ(det->lastStats().droppedWindows, 0u);
-		ASSERT_EQ(uint64_t(d.count), det->lastStats().windows);
 		ASSERT_TRUE(full.compute(frame.data(), 3 * w, w, h).ok());
 		const std::map<BoxKey, float> want = fullLevelScores(full, impl.classifier, model.params);
-		ASSERT_LT(size_t(d.count), want.size()) << "the calibrated method classifies fewer windows";
-		for (const Detection &b : d) {
-			const auto it = want.find(BoxKey(b.x, b.y, b.w, b.h));
-			ASSERT_NE(it, want.end()) << "a window the full levels do not have: " << b.x << "," << b.y;
-			ASSERT_EQ(b.score, it->second) << "frame " << seed << " box " << b.x << "," << b.y << " " << b.w
-						       << "x" << b.h;
-			compared++;
+		for (Detector *which : { det.get(), bands.get() }) {
+			const char *mode = which == det.get() ? "rectangles" : "bands";
+			Detections d;
+			st = which->detect(ImageView::rgb8(frame.data(), w, h), d);
+			ASSERT_TRUE(st.ok()) << st.message();
+			ASSERT_EQ(which->lastStats().droppedWindows, 0u);
+			ASSERT_EQ(uint64_t(d.count), which->lastStats().windows);
+			ASSERT_LT(size_t(d.count), want.size()) << "the calibrated method classifies fewer windows";
+			for (const Detection &b : d) {
+				const auto it = want.find(BoxKey(b.x, b.y, b.w, b.h));
+				ASSERT_NE(it, want.end()) << mode << ": a window the full levels do not have: " << b.x
+							  << "," << b.y;
+				ASSERT_EQ(b.score, it->second) << mode << ", frame " << seed << " box " << b.x << ","
+							       << b.y << " " << b.w << "x" << b.h;
+				compared++;
+			}
 		}
 	}
-	std::printf("LDCF calibrated, placed levels in %ld rectangles: %zu window scores over 3 frames equal "
-		    "the full levels'\n",
+	std::printf("LDCF calibrated, placed levels in %ld rectangles, and in bands: %zu window scores over 3 "
+		    "frames equal the full levels'\n",
 		    impl.pyramid.rectsComputed, compared);
 	EXPECT_GT(impl.pyramid.rectsComputed, 0);
 	EXPECT_GT(compared, 1000u);
