@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // The calibrated method with LDCF: every window it classifies, in rectangles of placed
-// levels (each grown by what the filter stage reads) or in the plan's bands, scores exactly
-// what the same window scores on the whole level computed and filtered in full.
+// levels (each grown by what the filter stage reads), in the plan's bands, or in one pass over
+// every plausible window, scores exactly what the same window scores on the whole level
+// computed and filtered in full.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -66,15 +67,18 @@ TEST(LdcfCalibrated, WindowScoresEqualTheFullLevels)
 	cfg.calibrated = CalibratedSettings();
 	cfg.calibrated->levels = PyramidLevels::Placed;
 	cfg.calibrated->boxVoting = false;
-	// Rectangles around each pass's windows, and the plan's bands demanded once a frame
-	// (prepared in the rows and columns the windows read).
-	std::unique_ptr<Detector> det, bands;
+	// Rectangles around each pass's windows; the plan's bands demanded once a frame
+	// (prepared in the rows and columns the windows read); one pass over every plausible
+	// window (levels prepared whole, exact in the plan's bands only).
+	std::unique_ptr<Detector> det, bands, every;
 	Status st = Detector::create(model, cfg, det);
 	ASSERT_TRUE(st.ok()) << st.message();
 	ASSERT_TRUE(Detector::create(model, cfg, bands).ok());
 	DetectorImpl &impl = DetectorInternals::of(*det);
 	ASSERT_TRUE(impl.calibratedSearch.rectsPerFrame());
 	DetectorInternals::of(*bands).calibratedSearch.setRectsPerFrame(false);
+	cfg.calibrated->sparseDense = false;
+	ASSERT_TRUE(Detector::create(model, cfg, every).ok());
 
 	// The reference: the same placed levels, computed whole, filtered whole.
 	ScaleList placed;
@@ -88,12 +92,12 @@ TEST(LdcfCalibrated, WindowScoresEqualTheFullLevels)
 	ASSERT_TRUE(full.setFilters(model).ok());
 
 	size_t compared = 0;
-	for (uint32_t seed = 0; seed < 3; seed++) {
+	for (uint32_t seed = 0; seed < 2; seed++) {
 		const std::vector<uint8_t> frame = test::randomImage(seed, w, h);
 		ASSERT_TRUE(full.compute(frame.data(), 3 * w, w, h).ok());
 		const std::map<BoxKey, float> want = fullLevelScores(full, impl.classifier, model.params);
-		for (Detector *which : { det.get(), bands.get() }) {
-			const char *mode = which == det.get() ? "rectangles" : "bands";
+		for (Detector *which : { det.get(), bands.get(), every.get() }) {
+			const char *mode = which == det.get() ? "rectangles" : which == bands.get() ? "bands" : "every window";
 			Detections d;
 			st = which->detect(ImageView::rgb8(frame.data(), w, h), d);
 			ASSERT_TRUE(st.ok()) << st.message();
@@ -110,8 +114,8 @@ TEST(LdcfCalibrated, WindowScoresEqualTheFullLevels)
 			}
 		}
 	}
-	std::printf("LDCF calibrated, placed levels in %ld rectangles, and in bands: %zu window scores over 3 "
-		    "frames equal the full levels'\n",
+	std::printf("LDCF calibrated, placed levels in %ld rectangles, in bands, every plausible window: %zu "
+		    "window scores over 2 frames equal the full levels'\n",
 		    impl.pyramid.rectsComputed, compared);
 	EXPECT_GT(impl.pyramid.rectsComputed, 0);
 	EXPECT_GT(compared, 1000u);

@@ -143,8 +143,10 @@ TEST(LdcfParity, Frame1Levels1And2WithinTolerance)
 	std::printf("LDCF levels 1-2, worst over 80 channels: mean %.3f%%, p99 %.3f%%\n", worstMean, worstP99);
 }
 
-// The toolbox's LDCF detections (after NMS) on PETS, frame by frame at native size and
-// with the frame resized 2x first (dets_up2x: acfDetect on imResample(I, 2)).
+// The toolbox's LDCF detections (after NMS) on PETS, frame by frame at native size (frames
+// 1-50, about 0.15 s a frame) and with the frame resized 2x first (dets_up2x: acfDetect on
+// imResample(I, 2); frames 1-5 of its 100, about 0.5 s a frame). docs/parity.md has the
+// figures.
 TEST(LdcfParity, DetectionsNativeFrames1To50)
 {
 	const std::string shared = test::sharedDir();
@@ -154,10 +156,10 @@ TEST(LdcfParity, DetectionsNativeFrames1To50)
 	test::expectDetectionParity(blob,
 				    shared + "/reference/dollar-toolbox-pets/" + kName +
 					    "/dets_native_frames1-50.csv",
-				    10, 1.0, ResizeAt::Frame, 0.95);
+				    50, 1.0, ResizeAt::Frame, 0.95);
 }
 
-TEST(LdcfParity, DetectionsResize2Frames1To100)
+TEST(LdcfParity, DetectionsResize2Frames1To5)
 {
 	const std::string shared = test::sharedDir();
 	const std::string blob = test::toolboxModelBlob(kName);
@@ -166,5 +168,5 @@ TEST(LdcfParity, DetectionsResize2Frames1To100)
 	test::expectDetectionParity(blob,
 				    shared + "/reference/dollar-toolbox-pets/" + kName +
 					    "/dets_up2x_frames1-100.csv",
-				    3, 2.0, ResizeAt::Frame, 0.95);
+				    5, 2.0, ResizeAt::Frame, 0.95);
 }
