@@ -75,6 +75,7 @@ const KernelTable &avx2Kernels()
 		t.shrink4 = shrink4_avx2;
 		t.scanDepth2 = scanDepth2_avx2;
 		t.scanDepth2List = scanDepth2List_avx2;
+		t.ldcfFilter = ldcfFilter_avx2;
 		return t;
 	}();
 	return table;
@@ -111,6 +112,7 @@ const KernelTable &neonKernels()
 		t.shrink4 = shrink4_neon;
 		t.gradHist4 = gradHist4_neon;
 		t.scanDepth2List = scanDepth2List_neon; // the grid stays scalar (trees_neon.cpp)
+		t.ldcfFilter = ldcfFilter_neon;
 		return t;
 	}();
 	return table;

@@ -227,6 +227,12 @@ constexpr int kLdcfBias = 1 << 15;
 // resample kernels keeps the bias exact (their weights sum to 2^14).
 void ldcfFilter_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
 		    const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride);
+// SIMD versions: 5x5 filters with int16 weights vectorised (opt/ldcf_body.h), others
+// by the reference.
+void ldcfFilter_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		     const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride);
+void ldcfFilter_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		     const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride);
 
 // ---- boosted trees over sliding windows ------------------------------------------------
 // A complete depth-2 tree with its feature offsets resolved for the level layout:
@@ -350,7 +356,7 @@ struct KernelTable {
 	// Shrink 2 (Caltech+, LDCF): the references in every table until SIMD versions exist.
 	decltype(&shrink2_ref) shrink2;
 	decltype(&gradHist2_ref) gradHist2;
-	// LDCF's filter (the reference in every table until SIMD versions exist).
+	// LDCF's filter (AVX2 and NEON versions; the reference in the portable table).
 	decltype(&ldcfFilter_ref) ldcfFilter;
 };
 

@@ -30,6 +30,30 @@ Model randomModel(uint32_t seed, int nTrees)
 	return m;
 }
 
+Model randomLdcfModel(uint32_t seed, int nTrees)
+{
+	Model m = randomModel(seed, nTrees);
+	ModelParams &p = m.params;
+	p.shrink = 2;
+	p.histBinSize = 2;
+	p.padH = 14;
+	p.padW = 12;
+	p.nFilters = 4;
+	p.filterSize = 5;
+	std::mt19937 rng(seed + 1);
+	std::uniform_int_distribution<int> weight(-16384, 16384), thr(-8192, 8192);
+	m.filters.resize(size_t(p.nFilters) * 10 * 25);
+	for (auto &f : m.filters)
+		f = weight(rng);
+	std::uniform_int_distribution<int> fid(0, m.featureCount() - 1);
+	for (size_t i = 0; i < m.fids.size(); i++)
+		if (m.child[i] != 0) {
+			m.fids[i] = uint32_t(fid(rng));
+			m.thrs[i] = thr(rng);
+		}
+	return m;
+}
+
 std::vector<uint8_t> randomImage(uint32_t seed, int width, int height)
 {
 	std::mt19937 rng(seed);

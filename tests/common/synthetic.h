@@ -12,6 +12,10 @@ namespace test {
 
 // A valid model with the INRIA model's options and nTrees random complete depth-2 trees.
 Model randomModel(uint32_t seed, int nTrees = 256);
+// The same with LdcfInriaDetector's options: shrink 2, padding 14 x 12 pixels, four random
+// 5x5 filters per channel (weights in [-0.5, 0.5]), trees over the 40 filtered channels
+// with thresholds around the filtered values' zero.
+Model randomLdcfModel(uint32_t seed, int nTrees = 256);
 
 // An RGB image with smooth gradients, edges and noise (deterministic for a seed).
 std::vector<uint8_t> randomImage(uint32_t seed, int width, int height);

@@ -401,3 +401,50 @@ TEST(BoundedMemory, ShrinkTwoModelAllocatesNothing)
 		}
 	}
 }
+
+// LDCF (LdcfInriaDetector's options: shrink 2, four 5x5 filters per channel): the filter
+// stage's buffers are made by create(), in the generic method, the calibrated one with
+// placed levels in rectangles, and on threads.
+TEST(BoundedMemory, LdcfModelAllocatesNothing)
+{
+	const Model model = test::randomLdcfModel(12, 256);
+	ASSERT_TRUE(validateModel(model).ok()) << validateModel(model).message();
+	ASSERT_EQ(model.featureCount(), 40 * 32 * 16);
+	Eigen::Matrix3d K;
+	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	std::vector<std::vector<uint8_t>> frames;
+	for (uint32_t s = 0; s < 3; s++)
+		frames.push_back(test::randomImage(s, 320, 240));
+	for (int variant = 0; variant < 3; variant++) {
+		DetectorConfig cfg;
+		cfg.maxWidth = 320;
+		cfg.maxHeight = 240;
+		cfg.cascadeThreshold = -10.0f;
+		cfg.threads = variant == 2 ? 2 : 1;
+		if (variant >= 1) {
+			cfg.method = DetectionMethod::Calibrated;
+			cfg.camera = &camera;
+			cfg.resize = 2.0;
+			cfg.resizeAt = ResizeAt::Pyramid;
+			cfg.calibrated = CalibratedSettings();
+			cfg.calibrated->levels = PyramidLevels::Placed;
+		}
+		std::unique_ptr<Detector> det;
+		const Status st = Detector::create(model, cfg, det);
+		ASSERT_TRUE(st.ok()) << st.message();
+		int detections = 0;
+		EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0) << "variant " << variant;
+		std::printf("LDCF, %s: %d detections, %llu windows in the last frame, 0 allocations\n",
+			    variant == 0 ? "generic" : variant == 1 ? "calibrated, placed levels" : "calibrated, 2 threads",
+			    detections, (unsigned long long)det->lastStats().windows);
+		EXPECT_GT(det->lastStats().windows, 0u);
+		EXPECT_GT(detections, 0);
+		if (variant >= 1) {
+			EXPECT_GT(DetectorInternals::of(*det).pyramid.rectsComputed, 0);
+		}
+	}
+}

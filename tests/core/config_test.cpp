@@ -8,6 +8,8 @@
 
 #include <calped/calped.h>
 
+#include "detect/memory_estimate.h"
+#include "pyramid/ldcf_filter.h"
 #include "synthetic.h"
 
 namespace calped {
@@ -231,6 +233,31 @@ TEST(DetectorConfig, MemoryBeyondTheBudgetIsRefusedBeforeAllocating)
 	EXPECT_EQ(st.code(), ErrorCode::OutOfMemory) << st.message();
 	c.memoryBudgetBytes = 0;
 	EXPECT_TRUE(Detector::create(model, c, det).ok());
+}
+
+// LDCF's filter stage is counted once per thread: on a PETS frame at resize 2, one filtered
+// channel of the largest padded level (596 x 786 cells of 2 pixels) and the 40 half-size
+// ones, next to the same options without filters.
+TEST(DetectorConfig, MemoryEstimateCountsLdcfFiltersPerThread)
+{
+	const Model ldcf = test::randomLdcfModel(1);
+	ModelParams acf = ldcf.params;
+	acf.nFilters = acf.filterSize = 0;
+	DetectorConfig c;
+	c.maxWidth = 768;
+	c.maxHeight = 576;
+	c.resize = 2;
+	const uint64_t without = estimateDetectorBytes(acf, c);
+	const uint64_t one = estimateDetectorBytes(ldcf.params, c);
+	c.threads = 3;
+	const uint64_t three = estimateDetectorBytes(ldcf.params, c);
+	const uint64_t withoutThree = estimateDetectorBytes(acf, c); // each thread's scratch too
+	// (1152 + 8) / 2 + 2 + 2 * 7 rows and (1536 + 8) / 2 + 2 + 2 * 6 columns.
+	const uint64_t filters = LdcfFilter::bytesFor(4, 596, 786);
+	EXPECT_EQ(one - without, filters);
+	EXPECT_EQ(three - withoutThree, 3 * filters);
+	EXPECT_GT(withoutThree, without);
+	EXPECT_GT(filters, 9u << 20); // 40 planes of 298 x 393 cells, and more
 }
 
 } // namespace

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "parity_util.h"
 #include "pyramid/ldcf_filter.h"
+#include "pyramid/pyramid.h"
 #include "test_data.h"
 
 using namespace calped;
@@ -139,4 +141,32 @@ TEST(LdcfParity, Frame1Levels1And2WithinTolerance)
 	const size_t n2 = compareFiltered(l2, channels, ref, n1, "LDCF level 2", worstMean, worstP99);
 	EXPECT_EQ(n1 + n2, ref.size());
 	std::printf("LDCF levels 1-2, worst over 80 channels: mean %.3f%%, p99 %.3f%%\n", worstMean, worstP99);
+}
+
+// The toolbox's LDCF detections (after NMS) on PETS, frame by frame at native size (frames
+// 1-20 of its 50, about 0.15 s a frame) and with the frame resized 2x first (dets_up2x:
+// acfDetect on imResample(I, 2); frames 1-5 of its 100, about 0.5 s a frame): a few seconds,
+// several times that under the sanitizers. docs/parity.md has the figures of longer runs.
+TEST(LdcfParity, DetectionsNativeFrames1To20)
+{
+	const std::string shared = test::sharedDir();
+	const std::string blob = test::toolboxModelBlob(kName);
+	if (shared.empty() || blob.empty() || test::petsFrame(1).empty())
+		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
+	test::expectDetectionParity(blob,
+				    shared + "/reference/dollar-toolbox-pets/" + kName +
+					    "/dets_native_frames1-50.csv",
+				    20, 1.0, ResizeAt::Frame, 0.95);
+}
+
+TEST(LdcfParity, DetectionsResize2Frames1To5)
+{
+	const std::string shared = test::sharedDir();
+	const std::string blob = test::toolboxModelBlob(kName);
+	if (shared.empty() || blob.empty() || test::petsFrame(1).empty())
+		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
+	test::expectDetectionParity(blob,
+				    shared + "/reference/dollar-toolbox-pets/" + kName +
+					    "/dets_up2x_frames1-100.csv",
+				    5, 2.0, ResizeAt::Frame, 0.95);
 }

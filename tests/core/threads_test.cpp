@@ -243,3 +243,32 @@ TEST(Threads, PetsSameForAnyThreadCount)
 	cfg.resize = 1.0;
 	EXPECT_GT(expectSameForAnyThreads(model, cfg, frames, "PETS generic"), 3 * 12 * sizeof(uint64_t));
 }
+
+// LDCF: each thread filters the levels it prepares into its own buffer. Generic, and
+// calibrated with placed levels (rectangles), the toolbox's octaves (bands) and every
+// plausible window.
+TEST(Threads, SyntheticLdcfSameForAnyThreadCount)
+{
+	const Model model = test::randomLdcfModel(7, 256);
+	DetectorConfig cfg;
+	cfg.maxWidth = 320;
+	cfg.maxHeight = 240;
+	cfg.cascadeThreshold = -10.0f;
+	expectSameForAnyThreads(model, cfg, syntheticFrames(320, 240, PixelFormat::RGB8, 1), "LDCF generic");
+	Eigen::Matrix3d K;
+	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	CameraModel camera;
+	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	cfg.resize = 2.0;
+	cfg.camera = &camera;
+	cfg.method = DetectionMethod::Calibrated;
+	for (int variant = 0; variant < 3; variant++) {
+		cfg.calibrated = CalibratedSettings();
+		cfg.calibrated->levels = variant == 0 ? PyramidLevels::Placed : PyramidLevels::Toolbox;
+		cfg.calibrated->sparseDense = variant != 2;
+		const std::string what = "LDCF calibrated variant " + std::to_string(variant);
+		expectSameForAnyThreads(model, cfg, syntheticFrames(320, 240, PixelFormat::RGB8, 1), what.c_str());
+	}
+}

@@ -171,7 +171,7 @@ struct FrameStats {
 	int staticRejected = 0;
 	uint64_t staticSkipped = 0;
 	// Wall time per stage: input resize, channels of computed levels, approximated levels
-	// (with smoothing and padding), classification, calibrated candidate generation and
+	// (with smoothing and padding, and LDCF's filter stage), classification, calibrated candidate generation and
 	// dense-region upkeep, suppression, and the whole frame.
 	double msResize = 0, msChannels = 0, msApprox = 0, msClassify = 0, msCandidates = 0,
 	       msNms = 0, msTotal = 0;

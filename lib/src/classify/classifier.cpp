@@ -27,11 +27,15 @@ void Classifier::init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeSt
 	params_ = model.params;
 	nTrees_ = model.nTrees;
 	nodesPerTree_ = model.nodesPerTree;
+	shrink_ = model.classifierShrink();
 	setCascadeThreshold(model.params.cascThr);
 
 	// Feature id -> offset: ids run down the window's rows, then columns, then channels.
-	const int rows = model.params.modelDsPadH / model.params.shrink;
-	const int cols = model.params.modelDsPadW / model.params.shrink;
+	const int rows = model.params.modelDsPadH / shrink_;
+	const int cols = model.params.modelDsPadW / shrink_;
+	// LDCF's trees read the filtered channels (biased Q12): the same splits moved there.
+	const bool filtered = model.params.nFilters > 0;
+	auto threshold = [&](int32_t q14) { return filtered ? LdcfFilter::thresholdFor(q14) : q14; };
 	auto offset = [&](uint32_t fid) {
 		const uint32_t r = fid % rows, c = (fid / rows) % cols, z = fid / (rows * cols);
 		return static_cast<uint32_t>(z * planeStride + r * rowStride + c);
@@ -48,7 +52,7 @@ void Classifier::init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeSt
 			kernels::Depth2Tree &d = depth2Trees_[t];
 			for (int k = 0; k < 3; k++) {
 				d.off[k] = offset(model.fids[b + k]);
-				d.thr[k] = model.thrs[b + k];
+				d.thr[k] = threshold(model.thrs[b + k]);
 			}
 			for (int k = 0; k < 4; k++)
 				d.leaf[k] = model.hs[b + 3 + k];
@@ -59,7 +63,7 @@ void Classifier::init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeSt
 			kernels::TreeNode &n = nodes_[i];
 			n.child = model.child[i];
 			n.off = n.child ? offset(model.fids[i]) : 0;
-			n.thr = model.thrs[i];
+			n.thr = threshold(model.thrs[i]);
 			n.leaf = model.hs[i];
 		}
 	}
@@ -73,7 +77,7 @@ void Classifier::setCascadeThreshold(float thr)
 
 void Classifier::windowGrid(int paddedHeight, int paddedWidth, int &rows, int &cols) const
 {
-	const int shrink = params_.shrink, stride = params_.stride;
+	const int shrink = shrink_, stride = params_.stride;
 	// The toolbox's window counts: ceil((size * shrink - model + 1) / stride).
 	rows = std::max(0, (paddedHeight * shrink - params_.modelDsPadH + stride) / stride);
 	cols = std::max(0, (paddedWidth * shrink - params_.modelDsPadW + stride) / stride);
@@ -82,7 +86,7 @@ void Classifier::windowGrid(int paddedHeight, int paddedWidth, int &rows, int &c
 uint64_t Classifier::scanList(const LevelChannels &level, const uint32_t *windows, size_t count,
 			      kernels::WindowHit *hits, uint64_t capacity) const
 {
-	const int step = params_.stride / params_.shrink;
+	const int step = params_.stride / shrink_;
 	if (depth2_)
 		return k_->scanDepth2List(level.data, level.rowStride, windows, count, step,
 					  depth2Trees_.data(), nTrees_, cascThr_, hits, capacity);
@@ -93,7 +97,7 @@ uint64_t Classifier::scanList(const LevelChannels &level, const uint32_t *window
 uint64_t Classifier::scan(const LevelChannels &level, kernels::WindowHit *hits,
 			  uint64_t capacity, uint64_t *windows) const
 {
-	const int shrink = params_.shrink, stride = params_.stride;
+	const int shrink = shrink_, stride = params_.stride;
 	int rows, cols;
 	windowGrid(level.paddedHeight, level.paddedWidth, rows, cols);
 	if (rows <= 0 || cols <= 0)

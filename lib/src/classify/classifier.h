@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "kernels.h"
+#include "pyramid/ldcf_filter.h"
 #include "pyramid/pyramid.h"
 
 namespace calped {
@@ -16,6 +17,7 @@ namespace calped {
 class Classifier
 {
 public:
+	// rowStride, planeStride: of the levels scan() will see (Pyramid::classifierRowStride()).
 	void init(const Model &model, ptrdiff_t rowStride, ptrdiff_t planeStride,
 		  const kernels::KernelTable &k = kernels::bestKernels());
 
@@ -28,13 +30,15 @@ public:
 	uint64_t scanList(const LevelChannels &level, const uint32_t *windows, size_t count,
 			  kernels::WindowHit *hits, uint64_t capacity) const;
 
-	// Window rows and columns of a level with this padded size (the toolbox's counts).
+	// Window rows and columns of a level with this padded size (cells of the channels the
+	// trees read: for LDCF the filtered, half-size level), the toolbox's counts.
 	void windowGrid(int paddedHeight, int paddedWidth, int &rows, int &cols) const;
 
 	void setCascadeThreshold(float thr);
 
 private:
 	ModelParams params_;
+	int shrink_ = 4; // pixels per cell of the channels the trees read (Model::classifierShrink)
 	const kernels::KernelTable *k_ = nullptr;
 	int nTrees_ = 0, nodesPerTree_ = 0;
 	bool depth2_ = false;

@@ -17,13 +17,6 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	Status st = validateModel(model);
 	if (!st.ok())
 		return st;
-	// The LDCF filter stage (pyramid/ldcf_filter.h) exists, but the search and classifier
-	// do not read its half-size, 40-channel levels yet.
-	if (model.params.nFilters != 0)
-		return Status::error(ErrorCode::ModelUnsupported,
-				     "LDCF filters (%d of %dx%d per channel) are not run by the detector yet",
-				     int(model.params.nFilters), int(model.params.filterSize),
-				     int(model.params.filterSize));
 	st = cfg.validate();
 	if (!st.ok())
 		return st;
@@ -56,8 +49,14 @@ Status DetectorImpl::init(const Model &model, const DetectorConfig &cfg)
 	st = pyramid.init(params, frameW, frameH, kernels::bestKernels(), inPyramid ? cfg.resize : 1.0, pool);
 	if (!st.ok())
 		return st;
+	// LDCF: the trees read each level after the filter stage.
+	if (params.nFilters > 0) {
+		st = pyramid.setFilters(model);
+		if (!st.ok())
+			return st;
+	}
 	try {
-		classifier.init(model, pyramid.rowStride(), pyramid.planeStride());
+		classifier.init(model, pyramid.classifierRowStride(), pyramid.classifierPlaneStride());
 		if (cfg.camera) {
 			camera_ = *cfg.camera;
 			hasCamera_ = true;
@@ -160,7 +159,7 @@ Status DetectorImpl::detect(const ImageView &image, Detections &out)
 
 	stats.computedLevels = pyramid.computedCount;
 	stats.msChannels = pyramid.msChannels;
-	stats.msApprox = pyramid.msApprox() + pyramid.msSmooth();
+	stats.msApprox = pyramid.msApprox() + pyramid.msSmooth() + pyramid.msFilter();
 	stats.msTotal = msSince(tStart);
 	out.items = boxes;
 	out.count = kept;

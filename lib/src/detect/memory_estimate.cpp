@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pyramid/ldcf_filter.h"
+
 namespace calped {
 
 namespace {
@@ -27,7 +29,21 @@ uint64_t estimateDetectorBytes(const ModelParams &params, const DetectorConfig &
 	const double pyramidPixels = (std::ceil(config.maxWidth * up) + 8) * (std::ceil(config.maxHeight * up) + 8);
 	const double inputPixels = double(config.maxWidth) * config.maxHeight;
 	const double perPixel = kSharedBytesPerPyramidPixel + kThreadBytesPerPyramidPixel * std::max(1, config.threads);
-	const double bytes = perPixel * pyramidPixels + kBytesPerInputPixel * inputPixels;
+	double bytes = perPixel * pyramidPixels + kBytesPerInputPixel * inputPixels;
+	// LDCF: each thread's filter stage holds one filtered channel of the largest padded
+	// level and all 10 * nFilters half-size filtered channels (about 5.75 bytes per pyramid
+	// pixel at shrink 2 with 4 filters), as Pyramid::setFilters sizes them.
+	if (params.nFilters > 0 && params.shrink > 0) {
+		const double levelH = std::ceil((std::ceil(config.maxHeight * up) + 8) / params.shrink) + 2 +
+				      2.0 * (params.padH / params.shrink);
+		const double levelW = std::ceil((std::ceil(config.maxWidth * up) + 8) / params.shrink) + 2 +
+				      2.0 * (params.padW / params.shrink);
+		if (levelH < 1e9 && levelW < 1e9)
+			bytes += double(std::max(config.threads, 1)) *
+				 double(LdcfFilter::bytesFor(params.nFilters, uint64_t(levelH), uint64_t(levelW)));
+		else
+			bytes = 1.8e19;
+	}
 	return bytes >= 1.8e19 ? UINT64_MAX : uint64_t(bytes);
 }
 

@@ -12,9 +12,9 @@
 namespace calped {
 
 // Bytes of the buffers that grow with the frame: the largest pyramid image (the frame at
-// resize * 2^nOctUp) with its channels and resampling buffers, and the frame-sized
-// colour planes. An estimate from their sizes that errs high (docs/errors.md); the trees
-// and candidate lists (small, fixed) are left out.
+// resize * 2^nOctUp) with its channels and resampling buffers, the frame-sized colour
+// planes, and for LDCF each thread's filter stage. An estimate from their sizes that errs
+// high (docs/errors.md); the trees and candidate lists (small, fixed) are left out.
 uint64_t estimateDetectorBytes(const ModelParams &params, const DetectorConfig &config);
 
 } // namespace calped

@@ -45,6 +45,50 @@ double Pyramid::msSmooth() const
 	return ms;
 }
 
+double Pyramid::msFilter() const
+{
+	double ms = 0;
+	for (const auto &s : scratch_)
+		ms += s->msFilter;
+	return ms;
+}
+
+Status Pyramid::setFilters(const Model &model)
+{
+	filtered_ = false;
+	// The largest prepared level: the first computed one, padded.
+	const int h = maxLevelH_ + 2 * padH_, w = maxLevelW_ + 2 * padW_;
+	for (auto &s : scratch_) {
+		const Status st = s->filter.init(model, h, w, *k_);
+		if (!st.ok())
+			return st;
+	}
+	filtered_ = true;
+	return Status::success();
+}
+
+ptrdiff_t Pyramid::classifierRowStride() const
+{
+	return filtered_ ? scratch_[0]->filter.rowStride() : rowStride_;
+}
+
+ptrdiff_t Pyramid::classifierPlaneStride() const
+{
+	return filtered_ ? scratch_[0]->filter.planeStride() : planeStride_;
+}
+
+LevelChannels Pyramid::classifierLevel(int i, const LevelRect *rects, int count, int worker)
+{
+	const LevelChannels level = prepare(i, rects, count, worker);
+	if (!filtered_)
+		return level;
+	Scratch &s = *scratch_[size_t(worker)];
+	const auto t0 = StageClock::now();
+	const LevelChannels out = s.filter.apply(level, rects, count, padH_, padW_);
+	s.msFilter += msSince(t0);
+	return out;
+}
+
 Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 		     const kernels::KernelTable &k, double upscale, ThreadPool *pool)
 {
@@ -77,6 +121,7 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 				     "softBin %d (spatial interpolation) is implemented for shrink 2 only",
 				     int(params.softBin));
 	params_ = params;
+	filtered_ = false; // the scratch sets (and their filters) are made anew below
 	maxWidth_ = maxWidth;
 	maxHeight_ = maxHeight;
 	placedCount_ = 0;

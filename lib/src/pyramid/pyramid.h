@@ -17,19 +17,11 @@
 #include "core/thread_pool.h"
 #include "kernels.h"
 #include "pyramid/cell_range.h"
+#include "pyramid/ldcf_filter.h"
+#include "pyramid/level_channels.h"
 #include "pyramid/scales.h"
 
 namespace calped {
-
-// One level as the classifier sees it: ten planes of paddedHeight x paddedWidth cells
-// sharing rowStride and planeStride (fixed for the pyramid, so feature offsets are too).
-struct LevelChannels {
-	const uint16_t *data = nullptr;
-	int paddedHeight = 0;
-	int paddedWidth = 0;
-	ptrdiff_t rowStride = 0;
-	ptrdiff_t planeStride = 0;
-};
 
 // What a pass of the search will read: rectangles of levels (cells before padding), or
 // every level whole. Points into the caller's arrays.
@@ -114,6 +106,19 @@ public:
 
 	ptrdiff_t rowStride() const { return rowStride_; }
 	ptrdiff_t planeStride() const { return planeStride_; }
+
+	// LDCF (a model with filters): the filter stage after prepare(), one per thread
+	// (pyramid/ldcf_filter.h), sized for this pyramid's largest level. Setup time.
+	Status setFilters(const Model &model);
+	bool filtered() const { return filtered_; }
+	// Level i as the classifier reads it: prepare(i, rects, count, worker), and with
+	// filters the filter stage in the same rectangles (exact where it reads only inside
+	// them: the calibrated method grows its rectangles by LdcfFilter::levelCellsRead).
+	LevelChannels classifierLevel(int i, const LevelRect *rects = nullptr, int count = 0,
+				      int worker = 0);
+	// The strides of classifierLevel()'s planes.
+	ptrdiff_t classifierRowStride() const;
+	ptrdiff_t classifierPlaneStride() const;
 	int padCellsH() const { return padH_; }
 	int padCellsW() const { return padW_; }
 
@@ -125,6 +130,7 @@ public:
 	double msChannels = 0;
 	double msApprox() const;
 	double msSmooth() const;
+	double msFilter() const; // LDCF's filter stage
 
 private:
 	// What one thread writes while computing a rectangle or preparing a level.
@@ -140,7 +146,8 @@ private:
 		std::vector<kernels::ResampleTap> taps[4];
 		std::vector<kernels::ResampleTap> yTapsBand;
 		std::vector<uint32_t> rowTmp;
-		double msApprox = 0, msSmooth = 0;
+		LdcfFilter filter; // with setFilters() only
+		double msApprox = 0, msSmooth = 0, msFilter = 0;
 	};
 	Status allocateScratch(Scratch &s, int luvW, int luvH, int maxWidth);
 
@@ -237,6 +244,7 @@ private:
 	int placedCount_ = 0;
 	int placedSource_[kMaxLevels] = {};
 	int padH_ = 0, padW_ = 0;
+	bool filtered_ = false;
 
 	PlaneBuffer<uint16_t> luv_[3];      // whole image in LUV
 	PlaneBuffer<uint16_t> halfLuv_[3];  // the image at scale 1/2 (source of smaller octaves)

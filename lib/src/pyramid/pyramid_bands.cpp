@@ -151,7 +151,7 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 	}
 	msChannels = msSince(t0);
 	for (auto &each : scratch_)
-		each->msApprox = each->msSmooth = 0;
+		each->msApprox = each->msSmooth = each->msFilter = 0;
 	return Status::success();
 }
 

@@ -6,21 +6,39 @@
 #include <new>
 
 #include "classify/classifier.h"
+#include "pyramid/ldcf_filter.h"
 
 namespace calped {
 
 namespace {
 
+// Pixels per cell of the channels the trees read (Model::classifierShrink: LDCF's filtered
+// levels are half size).
+int classifierShrink(const ModelParams &p) { return p.nFilters > 0 ? 2 * p.shrink : p.shrink; }
+
+// Cells of a level (before its `pad` cells of padding, clipped to its `size`) that the
+// classifier's padded cells `read` depend on: the same cells, or for LDCF what the filter
+// stage reads to produce them.
+CellRange levelCellsOf(const ModelParams &p, const CellRange &read, int pad, int size)
+{
+	if (p.nFilters > 0)
+		return LdcfFilter::levelCellsRead(read, p.filterSize, pad, size);
+	return CellRange{ read.begin - pad, read.end - pad }.clipped(size);
+}
+
 // Rows of a level (before padding) read by windows in rows firstRow..lastRow: a window at
-// row r reads padded rows [r * step, r * step + model height).
+// row r reads the classifier's padded rows [r * step, r * step + model height).
 CellRange windowRowsRead(const ModelParams &p, int padH, int firstRow, int lastRow, int height)
 {
 	if (lastRow < firstRow)
 		return CellRange();
-	const int step = p.stride / p.shrink;
-	const int windowRows = p.modelDsPadH / p.shrink;
-	return CellRange{ firstRow * step - padH, lastRow * step + windowRows - padH }.clipped(height);
+	const int step = p.stride / classifierShrink(p);
+	const int windowRows = p.modelDsPadH / classifierShrink(p);
+	return levelCellsOf(p, CellRange{ firstRow * step, lastRow * step + windowRows }, padH, height);
 }
+
+// The classifier's padded size of a level whose padded size is n.
+int classifierCells(const ModelParams &p, int n) { return p.nFilters > 0 ? (n + 1) / 2 : n; }
 
 } // namespace
 
@@ -55,7 +73,8 @@ Status CalibratedPlan::build(const CameraModel &camera, const ModelParams &param
 			colFirst_[i] = plausibleFirst_.size();
 			const PyramidLevel &l = scales.levels[i];
 			int rows, cols;
-			classifier.windowGrid(l.height + 2 * padH, l.width + 2 * padW, rows, cols);
+			classifier.windowGrid(classifierCells(params, l.height + 2 * padH),
+					      classifierCells(params, l.width + 2 * padW), rows, cols);
 			if (rows > 65535 || cols > 65535)
 				return Status::error(ErrorCode::InvalidArgument, "level %d too large", i);
 			rows_[i] = rows;
@@ -129,10 +148,10 @@ CellRange CalibratedPlan::windowColsRead(int i, int firstCol, int lastCol) const
 	if (lastCol < firstCol)
 		return CellRange();
 	// A window at column c reads padded columns [c * step, c * step + model width).
-	const int step = params_.stride / params_.shrink;
-	const int windowCols = params_.modelDsPadW / params_.shrink;
-	return CellRange{ firstCol * step - padW_, lastCol * step + windowCols - padW_ }.clipped(
-		scales_.levels[i].width);
+	const int step = params_.stride / classifierShrink(params_);
+	const int windowCols = params_.modelDsPadW / classifierShrink(params_);
+	return levelCellsOf(params_, CellRange{ firstCol * step, lastCol * step + windowCols }, padW_,
+			    scales_.levels[i].width);
 }
 
 LevelRect CalibratedPlan::windowsRect(int i, int firstRow, int lastRow, int firstCol, int lastCol) const

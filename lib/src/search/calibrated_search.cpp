@@ -137,7 +137,7 @@ Status CalibratedSearch::run(FrameInput &input, Pyramid &pyramid, const Classifi
 			const int t = passOrder_[task];
 			const int i = passLevels_[t];
 			LevelWork &work = work_[t];
-			const LevelChannels level = pyramid.prepare(i, nullptr, 0, worker);
+			const LevelChannels level = pyramid.classifierLevel(i, nullptr, 0, worker);
 			const auto t0 = StageClock::now();
 			work.hits = out.classifyInLane(worker, classifier, pyramid.scales().levels[i], level,
 						       plan_.windows(i), plan_.windowCount(i));
@@ -275,12 +275,12 @@ void CalibratedSearch::classifyListed(int i, const uint32_t *list, size_t n, int
 		// edge of one does not reach into another).
 		if (levelRectCount_[i] == 0)
 			return;
-		channels = pyramid.prepare(i, levelRects_[i], levelRectCount_[i], worker);
+		channels = pyramid.classifierLevel(i, levelRects_[i], levelRectCount_[i], worker);
 	} else {
 		// Level i prepared only in the rows and columns these windows read (of the
 		// plan's bands).
 		const LevelRect read{ plan_.rowsRead(i, list, n), plan_.colsRead(i, list, n) };
-		channels = pyramid.prepare(i, &read, 1, worker);
+		channels = pyramid.classifierLevel(i, &read, 1, worker);
 	}
 	const auto t0 = StageClock::now();
 	work.hits = out.classifyInLane(worker, classifier, level, channels, list, n);

@@ -16,7 +16,7 @@ Status searchEveryWindow(FrameInput &input, Pyramid &pyramid, const Classifier &
 	double ms[kMaxLevels];
 	out.emptyLanes();
 	auto one = [&](int i, int worker) {
-		const LevelChannels level = pyramid.prepare(i, nullptr, 0, worker);
+		const LevelChannels level = pyramid.classifierLevel(i, nullptr, 0, worker);
 		const auto t0 = StageClock::now();
 		hits[i] = out.classifyInLane(worker, classifier, scales.levels[i], level, nullptr, 0);
 		ms[i] = msSince(t0);
