@@ -114,6 +114,34 @@ TEST_F(EvalCli, ScoreOnlyNeedsTheFrameCount)
 }
 
 // Value of `"key": number` in the n-th (0-based) object of calped-eval's JSON.
+double jsonValue(const std::string &json, int n, const std::string &key);
+
+TEST_F(EvalCli, ScoreOnlyMaxFramesScoresTheFirstFrames)
+{
+	// Detections on frames 1-3 of a 3-frame sequence; --max-frames 2 scores frames 1-2.
+	const fs::path csv = dir_ / "run.csv";
+	std::ofstream(csv) << "frame,x,y,w,h,score\n1,100,200,30,80,50\n2,105,201,30,80,40\n"
+			      "3,400,100,30,80,30\n";
+	const std::string gt = quote(test::dataPath("mot_small.txt"));
+	const fs::path json = dir_ / "scored.json";
+	Result r = run("--score-only " + quote(csv.string()) + " --num-frames 3 --max-frames 2 --gt " + gt +
+		       " --json " + quote(json.string()));
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	std::string text = slurp(json.string());
+	EXPECT_EQ(jsonValue(text, 0, "frames"), 2.0) << text;
+	EXPECT_EQ(jsonValue(text, 0, "detections"), 2.0) << text;
+	r = run("--score-only " + quote(csv.string()) + " --num-frames 3 --gt " + gt + " --json " +
+		quote(json.string()));
+	ASSERT_EQ(r.exitCode, 0) << r.err;
+	text = slurp(json.string());
+	EXPECT_EQ(jsonValue(text, 0, "frames"), 3.0) << text;
+	EXPECT_EQ(jsonValue(text, 0, "detections"), 3.0) << text;
+	// A row beyond the frames the CSV covers is still an error.
+	r = run("--score-only " + quote(csv.string()) + " --num-frames 2 --gt " + gt);
+	EXPECT_EQ(r.exitCode, 1) << r.err;
+	EXPECT_NE(r.err.find("run.csv:4"), std::string::npos) << r.err;
+}
+
 double jsonValue(const std::string &json, int n, const std::string &key)
 {
 	size_t pos = 0;

@@ -119,24 +119,27 @@ int writeOutputs(const EvalOptions &opt, const std::vector<RunResult> &runs,
 int scoreOnly(const EvalOptions &opt, const GroundTruth &truth)
 {
 	std::string error;
-	long frames = opt.numFrames;
-	std::string framesText = std::to_string(frames) + " frames";
+	// The frames the CSVs cover (a row beyond them is an error), and the first of them
+	// that are scored (--max-frames: later rows are left out).
+	long covered = opt.numFrames;
 	if (!opt.framesDir.empty()) {
 		std::vector<std::string> files;
 		if (!apps::listFrames({ opt.framesDir }, files, error))
 			return fail(kExitRuntime, error);
-		frames = static_cast<long>(files.size());
-		if (opt.maxFrames > 0)
-			frames = std::min(frames, opt.maxFrames);
-		framesText = "`" + opt.framesDir + "` (" + std::to_string(frames) + " frames)";
+		covered = static_cast<long>(files.size());
 	}
+	const long frames = opt.maxFrames > 0 ? std::min(covered, opt.maxFrames) : covered;
+	std::string framesText = std::to_string(frames) + " frames";
+	if (!opt.framesDir.empty())
+		framesText = "`" + opt.framesDir + "` (" + std::to_string(frames) + " frames)";
 	if (!makeOutputDirs(opt, error))
 		return fail(kExitRuntime, error);
 	std::vector<RunResult> runs;
 	for (const std::string &path : opt.scoreOnly) {
 		RunResult r;
-		if (!readDetectionsCsv(path, frames, r.detections, error))
+		if (!readDetectionsCsv(path, covered, r.detections, error))
 			return fail(kExitRuntime, error);
+		r.detections.resize(size_t(frames));
 		splitStem(std::filesystem::path(path).stem().string(), r.method, r.resize);
 		if (!opt.label.empty())
 			r.method = opt.label;
