@@ -30,12 +30,17 @@ namespace {
 // reference's CPU), this CPU's own rcpps / rsqrtps, or exact division and square root.
 enum class Approx { Intel, Hardware, Exact };
 Approx gApprox = Approx::Intel;
+// Per stage (colour, gradient, normalisation) when set: which approximation it sees.
+Approx gStageApprox[3];
+bool gPerStage = false;
+int gStage = 0;
 
 float intelRcpRule(float vf);
 float intelRsqrtRule(float vf);
 
 float intelRcp(float v)
 {
+	const Approx gApprox = gPerStage ? gStageApprox[gStage] : ::gApprox;
 	if (gApprox == Approx::Hardware)
 		return _mm_cvtss_f32(_mm_rcp_ss(_mm_set_ss(v)));
 	if (gApprox == Approx::Exact)
@@ -45,6 +50,7 @@ float intelRcp(float v)
 
 float intelRsqrt(float v)
 {
+	const Approx gApprox = gPerStage ? gStageApprox[gStage] : ::gApprox;
 	if (gApprox == Approx::Hardware)
 		return _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(v)));
 	if (gApprox == Approx::Exact)
@@ -102,6 +108,7 @@ const int kOrients = 6;
 // ---- colour -------------------------------------------------------------------------------
 void luvFloat(const test::RgbImage &im, Img luv[3])
 {
+	gStage = 0;
 	const float nrm = 1.0f / 255;
 	const float mr[3] = { 0.430574f * nrm, 0.222015f * nrm, 0.020183f * nrm };
 	const float mg[3] = { 0.341550f * nrm, 0.706655f * nrm, 0.129553f * nrm };
@@ -137,10 +144,10 @@ void luvFloat(const test::RgbImage &im, Img luv[3])
 		}
 }
 
-void luvFixed(const test::RgbImage &im, Img luv[3])
+void luvFixed(const test::RgbImage &im, Img luv[3], RcpRule rule = RcpRule::Intel)
 {
 	LuvTables t;
-	buildLuvTables(t);
+	buildLuvTables(t, rule);
 	std::vector<uint16_t> p[3];
 	for (auto &q : p)
 		q.resize(size_t(im.width) * im.height);
@@ -156,6 +163,7 @@ void luvFixed(const test::RgbImage &im, Img luv[3])
 // ---- gradient: magnitude and orientation in bins (o = theta * nOrients / pi) --------------
 void gradFloat(const Img luv[3], Img &M, Img &O)
 {
+	gStage = 1;
 	const int w = luv[0].w, h = luv[0].h;
 	M.init(w, h);
 	O.init(w, h);
@@ -227,6 +235,7 @@ void gradFixed(const Img luv[3], Img &M, Img &O)
 // ---- normalisation: M / (convTri(M, 5) + 0.005) -------------------------------------------
 void normFloat(Img &M)
 {
+	gStage = 2;
 	const int w = M.w, h = M.h, r = 5;
 	// Triangle weights 1..r+1..1 with symmetric borders, in double.
 	auto sym = [](int i, int n) { return i < 0 ? -i - 1 : (i >= n ? 2 * n - i - 1 : i); };
@@ -486,8 +495,42 @@ int main(int argc, char **argv)
 		report("float emulation: magnitude channel", Ms, ref, 3, 1);
 		run("float emulation: orientation channels", 0, false, false, false, false);
 	}
+	gApprox = Approx::Hardware;
+	luvFloat(img, luvF);
+	for (int c = 0; c < 3; c++) {
+		luvQ[c] = luvF[c];
+		for (float &v : luvQ[c].v)
+			v = toQ(v, kLuvQ) / 65536.0f;
+	}
+	std::printf("this CPU's reciprocals in some stages only (others Intel's):\n");
+	const char *stageNames[3] = { "colour", "gradient", "normalisation" };
+	for (unsigned mask = 1; mask < 7; mask++) {
+		gPerStage = true;
+		std::string label = "  this CPU's in:";
+		for (int st = 0; st < 3; st++) {
+			gStageApprox[st] = (mask >> st) & 1 ? Approx::Hardware : Approx::Intel;
+			if ((mask >> st) & 1)
+				label += std::string(" ") + stageNames[st];
+		}
+		luvFloat(img, luvF);
+		run(label.c_str(), 0, false, false, false, false);
+	}
+	gPerStage = false;
+	luvFloat(img, luvF);
+	std::printf("this CPU's reciprocals, one of calped's roundings at a time:\n");
+	run("  LUV rounded to Q16", 0, true, false, false, false);
+	run("  magnitude rounded to Q16", 0, false, true, false, false);
+	run("  normalised magnitude rounded to Q14", 0, false, false, true, false);
+	run("  orientation rounded to 1/1024 bin", 0, false, false, false, true);
+	run("  calped histograms (gradHist2)", 1u << kHist, false, false, false, false);
+	run("  all of these", 1u << kHist, true, true, true, true);
 	gApprox = Approx::Intel;
 	luvFloat(img, luvF);
+	for (int c = 0; c < 3; c++) {
+		luvQ[c] = luvF[c];
+		for (float &v : luvQ[c].v)
+			v = toQ(v, kLuvQ) / 65536.0f;
+	}
 	run("float emulation of the toolbox", 0, false, false, false, false);
 	gExactNorm = true;
 	run("  exact division in the normalisation", 0, false, false, false, false);
@@ -510,5 +553,7 @@ int main(int argc, char **argv)
 	run("calped LUV + gradient + normalisation",
 	    (1u << kLuv) | (1u << kGrad) | (1u << kNorm), false, false, false, false);
 	run("calped, every stage", 15u, false, false, false, false);
+	luvFixed(img, luvC, RcpRule::AmdEpyc);
+	run("calped, every stage, AMD EPYC colour rcpps", 15u, false, false, false, false);
 	return 0;
 }
