@@ -221,6 +221,17 @@ void shrink2_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height
 void gradHist2_ref(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
 		   int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
 		   ptrdiff_t histStride, uint32_t *scratch);
+// Optimised versions (opt/hist2_body.h; x86/aggregate2_avx2.cpp, arm/aggregate2_neon.cpp).
+void shrink2_opt(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void gradHist2_opt(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		   int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		   ptrdiff_t histStride, uint32_t *scratch);
+void shrink2_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void gradHist2_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		    int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		    ptrdiff_t histStride, uint32_t *scratch);
 
 // ---- LDCF (locally decorrelated channels) ----------------------------------------------
 // Filtered channels are signed and reach beyond Q14's [0, 4) (LdcfInriaDetector's
@@ -334,6 +345,11 @@ void shrink4_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int heigh
 void gradHist4_neon(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
 		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
 		    ptrdiff_t histStride, uint32_t *scratch);
+void shrink2_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void gradHist2_neon(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		    int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		    ptrdiff_t histStride, uint32_t *scratch);
 // ---- end of NEON kernels ---------------------------------------------------------------
 
 // ---- dispatch ----------------------------------------------------------------------------
@@ -355,7 +371,7 @@ struct KernelTable {
 	decltype(&scanTrees_ref) scanTrees;
 	decltype(&scanDepth2List_ref) scanDepth2List;
 	decltype(&scanTreesList_ref) scanTreesList;
-	// Shrink 2 (Caltech+, LDCF): the references in every table until SIMD versions exist.
+	// Shrink 2 (Caltech+, LDCF).
 	decltype(&shrink2_ref) shrink2;
 	decltype(&gradHist2_ref) gradHist2;
 	// LDCF's filter (the reference in every table until SIMD versions exist).
