@@ -7,6 +7,8 @@
 // calped's fixed-point reference kernel or by a rounding of its float result to calped's
 // format. Prints, per variant, the orientation channels' mean |diff| as % of their mean
 // against the toolbox's level (../shared/reference/dollar-toolbox-pets/AcfCaltech+Detector).
+// "This CPU's" reciprocals are the x86 instructions of the machine it runs on: the reference
+// came from an AMD EPYC (family 26), where they reproduce it (docs/parity.md). x86 only.
 //   caltech_precision [--frame PNG] [--shared DIR]
 #include <algorithm>
 #include <cmath>
@@ -38,7 +40,7 @@ int gStage = 0;
 float intelRcpRule(float vf);
 float intelRsqrtRule(float vf);
 
-float intelRcp(float v)
+float toolboxRcp(float v)
 {
 	const Approx gApprox = gPerStage ? gStageApprox[gStage] : ::gApprox;
 	if (gApprox == Approx::Hardware)
@@ -48,7 +50,7 @@ float intelRcp(float v)
 	return intelRcpRule(v);
 }
 
-float intelRsqrt(float v)
+float toolboxRsqrt(float v)
 {
 	const Approx gApprox = gPerStage ? gStageApprox[gStage] : ::gApprox;
 	if (gApprox == Approx::Hardware)
@@ -100,9 +102,7 @@ struct Img {
 };
 
 const float kPi = 3.14159265f;
-// Exact division instead of rcpps in the colour conversion / the normalisation (the
-// toolbox's non-SSE paths, taken when its arrays are not 16-byte aligned).
-bool gExactLuv = false, gExactNorm = false;
+
 const int kOrients = 6;
 
 // ---- colour -------------------------------------------------------------------------------
@@ -135,8 +135,7 @@ void luvFloat(const test::RgbImage &im, Img luv[3])
 			const float X = r * mr[0] + g * mg[0] + b * mb[0];
 			const float Y = r * mr[1] + g * mg[1] + b * mb[1];
 			const float Z = r * mr[2] + g * mg[2] + b * mb[2];
-			const float dd = X + (1e-35f + (15.0f * Y + 3.0f * Z));
-			const float z = gExactLuv ? 1.0f / dd : intelRcp(dd);
+			const float z = toolboxRcp(X + (1e-35f + (15.0f * Y + 3.0f * Z)));
 			const float l = lTable[int(1024.0f * Y)];
 			luv[0].at(x, y) = l;
 			luv[1].at(x, y) = l * (52.0f * X * z - cun) - minu;
@@ -194,8 +193,8 @@ void gradFloat(const Img luv[3], Img &M, Img &O)
 					gy = cy;
 				}
 			}
-			const float r = std::min(intelRsqrt(m2), 1e10f);
-			M.at(x, y) = intelRcp(r);
+			const float r = std::min(toolboxRsqrt(m2), 1e10f);
+			M.at(x, y) = toolboxRcp(r);
 			float cs = gx * r * 10000.0f;
 			if (std::signbit(gy))
 				cs = -cs;
@@ -254,7 +253,7 @@ void normFloat(Img &M)
 			for (int d = -r; d <= r; d++)
 				s += (r + 1 - std::abs(d)) * double(T.at(x, sym(y + d, h)));
 			const float S = float(s / ((r + 1) * (r + 1)));
-			M.at(x, y) = gExactNorm ? M.at(x, y) / (S + 0.005f) : M.at(x, y) * intelRcp(S + 0.005f);
+			M.at(x, y) = M.at(x, y) * toolboxRcp(S + 0.005f);
 		}
 }
 
@@ -531,16 +530,8 @@ int main(int argc, char **argv)
 		for (float &v : luvQ[c].v)
 			v = toQ(v, kLuvQ) / 65536.0f;
 	}
+	std::printf("Intel's rule, one stage at a time rounded or replaced by calped's kernel:\n");
 	run("float emulation of the toolbox", 0, false, false, false, false);
-	gExactNorm = true;
-	run("  exact division in the normalisation", 0, false, false, false, false);
-	gExactLuv = true;
-	luvFloat(img, luvF);
-	run("  and in the colour conversion", 0, false, false, false, false);
-	gExactNorm = false;
-	run("  exact division in the colour conversion", 0, false, false, false, false);
-	gExactLuv = false;
-	luvFloat(img, luvF);
 	run("  LUV rounded to Q16", 0, true, false, false, false);
 	run("  magnitude rounded to Q16", 0, false, true, false, false);
 	run("  normalised magnitude rounded to Q14", 0, false, false, true, false);
