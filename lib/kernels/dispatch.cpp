@@ -48,8 +48,8 @@ const KernelTable &portableKernels()
 		scanTrees_ref,
 		scanDepth2List_ref,
 		scanTreesList_ref,
-		shrink2_ref,
-		gradHist2_ref,
+		shrink2_opt,
+		gradHist2_opt,
 		ldcfFilter_ref,
 	};
 	return table;
@@ -73,6 +73,8 @@ const KernelTable &avx2Kernels()
 		t.normalizeMag = normalizeMag_avx2;
 		t.gradHist4 = gradHist4_avx2;
 		t.shrink4 = shrink4_avx2;
+		t.shrink2 = shrink2_avx2;
+		t.gradHist2 = gradHist2_avx2;
 		t.scanDepth2 = scanDepth2_avx2;
 		t.scanDepth2List = scanDepth2List_avx2;
 		t.ldcfFilter = ldcfFilter_avx2;
@@ -111,6 +113,8 @@ const KernelTable &neonKernels()
 		t.normalizeMag = normalizeMag_neon;
 		t.shrink4 = shrink4_neon;
 		t.gradHist4 = gradHist4_neon;
+		t.shrink2 = shrink2_neon;
+		t.gradHist2 = gradHist2_neon;
 		t.scanDepth2List = scanDepth2List_neon; // the grid stays scalar (trees_neon.cpp)
 		t.ldcfFilter = ldcfFilter_neon;
 		return t;

@@ -32,6 +32,13 @@ inline void normalize12(uint64_t v, int &m, int &k)
 	m = static_cast<int>(k >= 0 ? v >> k : v << -k);
 }
 
+// The same with a 13-bit mantissa m in [4096, 8192).
+inline void normalize13(uint64_t v, int &m, int &k)
+{
+	k = bitLength(v) - 13;
+	m = static_cast<int>(k >= 0 ? v >> k : v << -k);
+}
+
 // Split v into an index m < 4096 and an even exponent k with v ~= m * 2^k: exact
 // (k = 0) below 1024, otherwise m >= 1024 (the square-root tables' mantissa).
 inline void normalizeEven(uint64_t v, int &m, int &k)

@@ -28,6 +28,13 @@ constexpr int kOrientQ = 10;
 constexpr int kCosSteps = 10000;
 
 // ---- colour: RGB8 -> LUV (Q16), the toolbox's rgbConvert(I, 'luv') -------------------
+// Whose approximate reciprocal (rcpps) the colour conversion reproduces: the toolbox
+// divides with it, and its results differ between CPU makers (docs/channels.md).
+enum class RcpRule {
+	Intel,   // the published rule of Intel's CPUs (the INRIA reference's Xeon)
+	AmdEpyc, // measured on an AMD EPYC of family 26 (the Caltech+ and LDCF references)
+};
+
 struct LuvTables {
 	// x, y, z = c[0] * r + c[1] * g + c[2] * b in Q28 (the toolbox's matrix / 255). The L
 	// table is indexed by floor(y * 1024), so y needs to be exact well beyond 2^-10: a
@@ -35,13 +42,14 @@ struct LuvTables {
 	int32_t cx[3], cy[3], cz[3];
 	// L/270 in Q16 indexed by floor(y * 1024) (the toolbox's 1025-entry cube-root table).
 	uint16_t l[1025 + 39];
-	// 2^27 / m for normalised mantissas m in [2048, 4096), as the toolbox's rcpps gives it
-	// (12 fraction bits, docs/channels.md).
-	uint32_t rcp[2048];
+	// 2^28 / m for normalised mantissas m in [4096, 8192), as the toolbox's rcpps gives it
+	// (12 fraction bits, docs/channels.md): Intel's depends on the top 11 bits of m's
+	// fraction, AMD's on all 12.
+	uint32_t rcp[4096];
 	int32_t un13, vn13; // 13 * u'n, 13 * v'n in Q20 (kLuvRatioQ)
 	int32_t minu, minv; // the toolbox's offsets -88/270, -134/270 in Q16
 };
-void buildLuvTables(LuvTables &t);
+void buildLuvTables(LuvTables &t, RcpRule rule = RcpRule::Intel);
 
 using RgbToLuvFn = void (*)(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride,
 			    int width, int height, uint16_t *l, uint16_t *u, uint16_t *v,
@@ -213,6 +221,17 @@ void shrink2_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height
 void gradHist2_ref(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
 		   int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
 		   ptrdiff_t histStride, uint32_t *scratch);
+// Optimised versions (opt/hist2_body.h; x86/aggregate2_avx2.cpp, arm/aggregate2_neon.cpp).
+void shrink2_opt(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		 uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void gradHist2_opt(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		   int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		   ptrdiff_t histStride, uint32_t *scratch);
+void shrink2_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void gradHist2_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		    int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		    ptrdiff_t histStride, uint32_t *scratch);
 
 // ---- LDCF (locally decorrelated channels) ----------------------------------------------
 // Filtered channels are signed and reach beyond Q14's [0, 4) (LdcfInriaDetector's
@@ -332,6 +351,11 @@ void shrink4_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int heigh
 void gradHist4_neon(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
 		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
 		    ptrdiff_t histStride, uint32_t *scratch);
+void shrink2_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch);
+void gradHist2_neon(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		    int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		    ptrdiff_t histStride, uint32_t *scratch);
 // ---- end of NEON kernels ---------------------------------------------------------------
 
 // ---- dispatch ----------------------------------------------------------------------------
@@ -353,7 +377,7 @@ struct KernelTable {
 	decltype(&scanTrees_ref) scanTrees;
 	decltype(&scanDepth2List_ref) scanDepth2List;
 	decltype(&scanTreesList_ref) scanTreesList;
-	// Shrink 2 (Caltech+, LDCF): the references in every table until SIMD versions exist.
+	// Shrink 2 (Caltech+, LDCF).
 	decltype(&shrink2_ref) shrink2;
 	decltype(&gradHist2_ref) gradHist2;
 	// LDCF's filter (AVX2 and NEON versions; the reference in the portable table).

@@ -47,9 +47,29 @@ double intelRsqrt(double v)
 	return std::ldexp(r, -halfExp - 1);
 }
 
+// AMD's rcpps (bench/amd_rcp_table.cpp), as corrections in {-1, 0, 1} units of 2^-12 to
+// the midpoint rule over cells of 12 fraction bits.
+const uint32_t kAmdRcpDelta[256] = {
+#include "amd_rcp_table.inc"
+};
+
+// rcpps of v > 0 by `rule`, exactly (a double holds it).
+double ruleRcp(double v, RcpRule rule)
+{
+	if (rule == RcpRule::Intel)
+		return intelRcp(v);
+	int e;
+	const double f = std::frexp(v, &e);
+	const int cell = int(std::floor(f * 8192.0)) - 4096; // top 12 fraction bits of 2f
+	const double mid = 1.0 + (cell + 0.5) / 4096.0;
+	const int delta = int((kAmdRcpDelta[cell / 16] >> (2 * (cell % 16))) & 3u) - 1;
+	const double r = (std::round(2.0 / mid * 4096.0) + delta) / 4096.0;
+	return std::ldexp(r, -e);
+}
+
 } // namespace
 
-void buildLuvTables(LuvTables &t)
+void buildLuvTables(LuvTables &t, RcpRule rule)
 {
 	// The toolbox's sRGB -> XYZ matrix (rgbConvertMex), applied to 8-bit values / 255.
 	const double mr[3] = { 0.430574, 0.222015, 0.020183 };
@@ -75,8 +95,8 @@ void buildLuvTables(LuvTables &t)
 	for (int i = 1025; i < 1025 + 39; i++)
 		t.l[i] = t.l[1024];
 
-	for (int m = 0; m < 2048; m++) // exact: a 13-bit mantissa times 2^3
-		t.rcp[m] = static_cast<uint32_t>(std::lround(intelRcp(2048 + m) * (1 << 27)));
+	for (int m = 0; m < 4096; m++) // exact: rcpps keeps 12 fraction bits, 2^28 / m has 15
+		t.rcp[m] = static_cast<uint32_t>(std::lround(ruleRcp(4096 + m, rule) * (1 << 28)));
 
 	const double one = 1 << kLuvQ, ratioOne = 1 << kLuvRatioQ;
 	t.un13 = roundToInt(13.0 * 0.197833 * ratioOne);

@@ -53,11 +53,10 @@ size_t compareFiltered(const LevelChannels &lc, int channels, const std::vector<
 		worstP99 = std::max(worstP99, p99Pct);
 		std::printf("%s filter %d channel %d: mean |diff| %.3f%% of mean |value|, p99 %.3f%% of max\n",
 			    what, c / kChannelCount, c % kChannelCount, meanPct, p99Pct);
-		// Issue 2's 1% holds for colour, magnitude and the box-like first filter; the
-		// orientation channels under the three zero-sum filters (small differences of
-		// neighbouring cells) are 1.2-2.7% of their mean |value| away (docs/parity.md).
-		const bool orientDifference = c % kChannelCount >= 4 && c >= kChannelCount;
-		EXPECT_LE(meanAbs, (orientDifference ? 0.03 : 0.01) * meanRef) << what << " channel " << c;
+		// Issue 2's 1% holds for every filtered channel with the reference CPU's rcpps
+		// (worst 0.80%, colour and magnitude under the zero-sum filters; with Intel's the
+		// orientation channels under those filters were 1.2-2.7% away: docs/parity.md).
+		EXPECT_LE(meanAbs, 0.01 * meanRef) << what << " channel " << c;
 		EXPECT_LE(p99, 0.05 * maxRef) << what << " channel " << c;
 	}
 	return n * channels;
@@ -115,6 +114,8 @@ TEST(LdcfParity, Frame1Levels1And2WithinTolerance)
 	const std::vector<float> ref = test::readFloats(dir + "/pyr_frame1_levels1-2.bin");
 	ASSERT_FALSE(ref.empty());
 
+	// The reference was computed on an AMD EPYC: its rcpps, not Intel's (docs/parity.md).
+	model.params.toolboxCpu = ToolboxCpu::AmdEpyc;
 	Pyramid pyr;
 	Status st = pyr.init(model.params, img.width, img.height);
 	ASSERT_TRUE(st.ok()) << st.message();
@@ -156,7 +157,7 @@ TEST(LdcfParity, DetectionsNativeFrames1To20)
 	test::expectDetectionParity(blob,
 				    shared + "/reference/dollar-toolbox-pets/" + kName +
 					    "/dets_native_frames1-50.csv",
-				    20, 1.0, ResizeAt::Frame, 0.95);
+				    20, 1.0, ResizeAt::Frame, 0.95, ToolboxCpu::AmdEpyc);
 }
 
 TEST(LdcfParity, DetectionsResize2Frames1To5)
@@ -168,5 +169,5 @@ TEST(LdcfParity, DetectionsResize2Frames1To5)
 	test::expectDetectionParity(blob,
 				    shared + "/reference/dollar-toolbox-pets/" + kName +
 					    "/dets_up2x_frames1-100.csv",
-				    5, 2.0, ResizeAt::Frame, 0.95);
+				    5, 2.0, ResizeAt::Frame, 0.95, ToolboxCpu::AmdEpyc);
 }

@@ -81,13 +81,14 @@ std::map<int, std::vector<Box>> readDetections(const std::string &path)
 }
 
 void expectDetectionParity(const std::string &modelBlob, const std::string &refPath, int frames,
-			   double resize, ResizeAt where, double minMatched)
+			   double resize, ResizeAt where, double minMatched, ToolboxCpu cpu)
 {
 	std::vector<uint8_t> blob;
 	ASSERT_TRUE(readFile(modelBlob, blob)) << modelBlob;
 	Model model;
 	Status st = loadModel(blob.data(), blob.size(), model);
 	ASSERT_TRUE(st.ok()) << st.message();
+	model.params.toolboxCpu = cpu;
 	DetectorConfig cfg;
 	cfg.maxWidth = 768;
 	cfg.maxHeight = 576;

@@ -25,8 +25,10 @@ std::map<int, std::vector<Box>> readDetections(const std::string &path);
 // it) and checks the detections against the toolbox's: at least minMatched of each side's
 // boxes with score >= 10 have a box of the other at IoU >= 0.8, and the median relative
 // score difference of the matches is at most 3%. Prints the figures. Skips without data.
+// `cpu`: whose rcpps the reference's toolbox ran with (docs/parity.md).
 void expectDetectionParity(const std::string &modelBlob, const std::string &refPath, int frames,
-			   double resize, ResizeAt where, double minMatched);
+			   double resize, ResizeAt where, double minMatched,
+			   ToolboxCpu cpu = ToolboxCpu::Intel);
 
 // Level `level` (0-based) of a prepared pyramid level against the toolbox's float32 dump in
 // Matlab column-major [h w c] order at `offset` floats: per channel, mean |diff| <= 1% of

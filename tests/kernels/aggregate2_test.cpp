@@ -118,38 +118,55 @@ TEST(Aggregate2, BlockMeansRoundToNearest)
 	}
 }
 
+// Every table's kernels bit for bit against the references: sizes around the SIMD widths
+// (8 and 16 pixels) with tails, too small for any cell, odd; random planes, and the
+// largest inputs (every magnitude 65535 with a whole orientation weight: the 32-bit cell
+// sums of the optimised kernels at their limit, the outputs saturated).
 TEST(Aggregate2, EveryTableEqualsTheReferences)
 {
 	const KernelTable *all[8];
 	const int count = availableKernelTables(all, 8);
 	ASSERT_GE(count, 1);
 	std::mt19937 rng(23);
+	const std::pair<int, int> sizes[] = { { 37, 11 }, { 64, 16 }, { 3, 3 }, { 1, 5 }, { 6, 1 },
+					      { 2, 2 }, { 16, 4 }, { 33, 9 }, { 50, 7 }, { 131, 6 } };
 	for (int t = 0; t < count; t++) {
 		const KernelTable *k = all[t];
-		for (const auto &size : { std::pair<int, int>{ 37, 11 }, { 64, 16 }, { 3, 3 } }) {
-			const int w = size.first, h = size.second, stride = w + 5, nOrients = 6;
-			const int wb = w / 2, hb = h / 2;
-			const auto mag = randomValues(rng, size_t(stride) * h, 65535);
-			const auto orient = randomValues(rng, size_t(stride) * h, (nOrients << kOrientQ) - 1);
-			std::vector<uint32_t> scratch(2 * nOrients * (w + 4));
-			for (bool interpolate : { true, false })
-				for (bool spatial : { true, false }) {
-					std::vector<uint16_t> a(size_t(nOrients) * wb * hb + 1, 3), b = a;
-					std::vector<uint16_t *> pa(nOrients), pb(nOrients);
-					for (int o = 0; o < nOrients; o++) {
-						pa[o] = a.data() + size_t(o) * wb * hb;
-						pb[o] = b.data() + size_t(o) * wb * hb;
+		for (const auto &size : sizes)
+			for (int extreme = 0; extreme < 3; extreme++)
+				for (int nOrients : { 6, 1 }) {
+					const int w = size.first, h = size.second, stride = w + 5;
+					const int wb = w / 2, hb = h / 2;
+					auto mag = randomValues(rng, size_t(stride) * h, 65535);
+					auto orient = randomValues(rng, size_t(stride) * h, (nOrients << kOrientQ) - 1);
+					if (extreme > 0) // whole bins: one orientation takes the full weight
+						for (size_t i = 0; i < mag.size(); i++) {
+							mag[i] = 65535;
+							orient[i] = uint16_t((extreme == 1 ? 0 : i % nOrients) << kOrientQ);
+						}
+					std::vector<uint32_t> scratch(2 * nOrients * (w + 4));
+					for (bool interpolate : { true, false })
+						for (bool spatial : { true, false }) {
+							std::vector<uint16_t> a(size_t(nOrients) * wb * hb + 1, 3), b = a;
+							std::vector<uint16_t *> pa(nOrients), pb(nOrients);
+							for (int o = 0; o < nOrients; o++) {
+								pa[o] = a.data() + size_t(o) * wb * hb;
+								pb[o] = b.data() + size_t(o) * wb * hb;
+							}
+							gradHist2_ref(mag.data(), orient.data(), stride, w, h, nOrients,
+								      interpolate, spatial, pa.data(), wb, scratch.data());
+							k->gradHist2(mag.data(), orient.data(), stride, w, h, nOrients,
+								     interpolate, spatial, pb.data(), wb, scratch.data());
+							ASSERT_EQ(a, b) << k->name << " gradHist2 " << w << "x" << h << " extreme "
+									<< extreme << " nOrients " << nOrients << " interpolate "
+									<< interpolate << " spatial " << spatial;
+						}
+					for (int extra : { 0, 2 }) {
+						std::vector<uint16_t> a(size_t(wb) * hb + 1, 3), b = a;
+						shrink2_ref(mag.data(), stride, w, h, a.data(), wb, extra, scratch.data());
+						k->shrink2(mag.data(), stride, w, h, b.data(), wb, extra, scratch.data());
+						ASSERT_EQ(a, b) << k->name << " shrink2 " << w << "x" << h << " extra " << extra;
 					}
-					gradHist2_ref(mag.data(), orient.data(), stride, w, h, nOrients, interpolate,
-						      spatial, pa.data(), wb, scratch.data());
-					k->gradHist2(mag.data(), orient.data(), stride, w, h, nOrients, interpolate,
-						     spatial, pb.data(), wb, scratch.data());
-					ASSERT_EQ(a, b) << k->name << " gradHist2 " << w << "x" << h;
 				}
-			std::vector<uint16_t> a(size_t(wb) * hb + 1, 3), b = a;
-			shrink2_ref(mag.data(), stride, w, h, a.data(), wb, 2, scratch.data());
-			k->shrink2(mag.data(), stride, w, h, b.data(), wb, 2, scratch.data());
-			ASSERT_EQ(a, b) << k->name << " shrink2 " << w << "x" << h;
-		}
 	}
 }

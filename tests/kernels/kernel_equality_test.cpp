@@ -354,61 +354,65 @@ TEST(KernelEquality, ResampleRgb8)
 TEST(KernelEquality, RgbToLuv)
 {
 	std::mt19937 rng(6);
-	LuvTables t;
-	buildLuvTables(t);
-	// Every table's kernel against the formula; those with a kernel of their own (not the
-	// reference's) also bit for bit against the reference.
-	for (const KernelTable *k : allTables()) {
-		const bool own = k->rgbToLuv != rgbToLuv_ref;
-		for (Size s : kSizes)
-			for (int offset : { 0, 1 }) {
-				const int rgbStride = 3 * s.w + 5, stride = s.w + 3;
-				std::vector<uint8_t> rgb(size_t(rgbStride) * s.h + offset);
-				for (auto &v : rgb)
-					v = uint8_t(rng() % 4 == 0 ? (rng() % 2) * 255 : rng()); // extremes too
-				std::vector<uint16_t> a(size_t(3) * stride * s.h + 1, 3), b = a;
-				const size_t plane = size_t(stride) * s.h;
-				rgbToLuv_ref(t, rgb.data() + offset, rgbStride, s.w, s.h, a.data(), a.data() + plane,
-					     a.data() + 2 * plane, stride);
-				k->rgbToLuv(t, rgb.data() + offset, rgbStride, s.w, s.h, b.data(), b.data() + plane,
-					    b.data() + 2 * plane, stride);
-				if (own) {
-					ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h;
-				}
-				for (int y = 0; y < s.h; y++)
-					for (int x = 0; x < s.w; x++) {
-						const size_t o = size_t(y) * stride + x;
-						ASSERT_TRUE(luvMatchesFormula(&rgb[offset + size_t(y) * rgbStride + 3 * x], b[o],
-									      b[plane + o], b[2 * plane + o]))
-							<< k->name << " " << s.w << "x" << s.h << " pixel " << x << "," << y;
+	// Both CPUs' reciprocal tables: the kernels index them by the same 12 fraction bits.
+	for (RcpRule rule : { RcpRule::Intel, RcpRule::AmdEpyc }) {
+		LuvTables t;
+		buildLuvTables(t, rule);
+		// Every table's kernel against the formula; those with a kernel of their own (not the
+		// reference's) also bit for bit against the reference.
+		for (const KernelTable *k : allTables()) {
+			const bool own = k->rgbToLuv != rgbToLuv_ref;
+			for (Size s : kSizes)
+				for (int offset : { 0, 1 }) {
+					const int rgbStride = 3 * s.w + 5, stride = s.w + 3;
+					std::vector<uint8_t> rgb(size_t(rgbStride) * s.h + offset);
+					for (auto &v : rgb)
+						v = uint8_t(rng() % 4 == 0 ? (rng() % 2) * 255 : rng()); // extremes too
+					std::vector<uint16_t> a(size_t(3) * stride * s.h + 1, 3), b = a;
+					const size_t plane = size_t(stride) * s.h;
+					rgbToLuv_ref(t, rgb.data() + offset, rgbStride, s.w, s.h, a.data(), a.data() + plane,
+						     a.data() + 2 * plane, stride);
+					k->rgbToLuv(t, rgb.data() + offset, rgbStride, s.w, s.h, b.data(), b.data() + plane,
+						    b.data() + 2 * plane, stride);
+					if (own) {
+						ASSERT_EQ(a, b) << k->name << " " << s.w << "x" << s.h;
 					}
+					// The formula is Intel's rcpps; AMD's table only against the reference.
+					for (int y = 0; rule == RcpRule::Intel && y < s.h; y++)
+						for (int x = 0; x < s.w; x++) {
+							const size_t o = size_t(y) * stride + x;
+							ASSERT_TRUE(luvMatchesFormula(&rgb[offset + size_t(y) * rgbStride + 3 * x], b[o],
+										      b[plane + o], b[2 * plane + o]))
+								<< k->name << " " << s.w << "x" << s.h << " pixel " << x << "," << y;
+						}
+				}
+		}
+		// Every grey level and every pure colour ramp, where the ratios are extreme, and a
+		// lattice of the colour cube (every fifth level of each component, ends included).
+		std::vector<uint8_t> rgb(256 * 4 * 3);
+		for (int i = 0; i < 256; i++)
+			for (int c = 0; c < 3; c++) {
+				rgb[3 * i + c] = uint8_t(i);
+				for (int ramp = 0; ramp < 3; ramp++)
+					rgb[3 * (256 * (ramp + 1) + i) + c] = c == ramp ? uint8_t(i) : 0;
 			}
-	}
-	// Every grey level and every pure colour ramp, where the ratios are extreme, and a
-	// lattice of the colour cube (every fifth level of each component, ends included).
-	std::vector<uint8_t> rgb(256 * 4 * 3);
-	for (int i = 0; i < 256; i++)
-		for (int c = 0; c < 3; c++) {
-			rgb[3 * i + c] = uint8_t(i);
-			for (int ramp = 0; ramp < 3; ramp++)
-				rgb[3 * (256 * (ramp + 1) + i) + c] = c == ramp ? uint8_t(i) : 0;
+		for (int r = 0; r <= 255; r += 5)
+			for (int g = 0; g <= 255; g += 5)
+				for (int b = 0; b <= 255; b += 5)
+					rgb.insert(rgb.end(), { uint8_t(r), uint8_t(g), uint8_t(b) });
+		const int n = int(rgb.size() / 3);
+		std::vector<uint16_t> a(3 * size_t(n));
+		rgbToLuv_ref(t, rgb.data(), 0, n, 1, a.data(), a.data() + n, a.data() + 2 * n, n);
+		for (const KernelTable *k : allTables()) {
+			std::vector<uint16_t> b(3 * size_t(n));
+			k->rgbToLuv(t, rgb.data(), 0, n, 1, b.data(), b.data() + n, b.data() + 2 * n, n);
+			if (k->rgbToLuv != rgbToLuv_ref) {
+				ASSERT_EQ(a, b) << k->name << " ramps and lattice";
+			}
+			for (int i = 0; rule == RcpRule::Intel && i < n; i++)
+				ASSERT_TRUE(luvMatchesFormula(&rgb[3 * size_t(i)], b[i], b[n + i], b[2 * n + i]))
+					<< k->name << " ramps and lattice, pixel " << i;
 		}
-	for (int r = 0; r <= 255; r += 5)
-		for (int g = 0; g <= 255; g += 5)
-			for (int b = 0; b <= 255; b += 5)
-				rgb.insert(rgb.end(), { uint8_t(r), uint8_t(g), uint8_t(b) });
-	const int n = int(rgb.size() / 3);
-	std::vector<uint16_t> a(3 * size_t(n));
-	rgbToLuv_ref(t, rgb.data(), 0, n, 1, a.data(), a.data() + n, a.data() + 2 * n, n);
-	for (const KernelTable *k : allTables()) {
-		std::vector<uint16_t> b(3 * size_t(n));
-		k->rgbToLuv(t, rgb.data(), 0, n, 1, b.data(), b.data() + n, b.data() + 2 * n, n);
-		if (k->rgbToLuv != rgbToLuv_ref) {
-			ASSERT_EQ(a, b) << k->name << " ramps and lattice";
-		}
-		for (int i = 0; i < n; i++)
-			ASSERT_TRUE(luvMatchesFormula(&rgb[3 * size_t(i)], b[i], b[n + i], b[2 * n + i]))
-				<< k->name << " ramps and lattice, pixel " << i;
 	}
 }
 

@@ -31,9 +31,29 @@ TEST(KernelTables, ColourReciprocalIsIntelRcpps)
 {
 	LuvTables t;
 	buildLuvTables(t);
-	// rcp[m - 2048] = 2^27 * rcpps(m) for the 12-bit mantissa m; rcpps(2^11 x) = rcpps(x) / 2^11.
+	// rcp[m - 4096] = 2^28 * rcpps(m) for the 13-bit mantissa m; rcpps(2^12 x) = rcpps(x) / 2^12.
 	EXPECT_EQ(t.rcp[0], uint32_t(std::ldexp(fromBits(0x3F7FF000), 16)));    // rcpps(1.0)
-	EXPECT_EQ(t.rcp[1024], uint32_t(std::ldexp(fromBits(0x3F2AA000), 16))); // rcpps(1.5)
+	EXPECT_EQ(t.rcp[2048], uint32_t(std::ldexp(fromBits(0x3F2AA000), 16))); // rcpps(1.5)
+	// Intel's rcpps depends on 11 fraction bits only: neighbouring 12-bit cells agree.
+	for (int i = 0; i < 4096; i += 2)
+		ASSERT_EQ(t.rcp[i], t.rcp[i + 1]) << i;
+}
+
+// The AMD EPYC's rcpps (family 26, where the Caltech+ and LDCF references were computed),
+// from lib/kernels/amd_rcp_table.inc: values read from that CPU.
+TEST(KernelTables, ColourReciprocalAmdEpyc)
+{
+	LuvTables t;
+	buildLuvTables(t, RcpRule::AmdEpyc);
+	EXPECT_EQ(t.rcp[0], uint32_t(std::ldexp(fromBits(0x3F7FF000), 16)));    // rcpps(1.0)
+	EXPECT_EQ(t.rcp[2048], uint32_t(std::ldexp(fromBits(0x3F2AA800), 16))); // rcpps(1.5)
+	EXPECT_EQ(t.rcp[1], uint32_t(std::ldexp(0.99951171875, 16)));          // rcpps(1 + 2^-12)
+	EXPECT_EQ(t.rcp[4095], uint32_t(std::ldexp(0.5, 16)));                  // rcpps(2 - 2^-12)
+	// Within 1.5 units of the 12th fraction bit of 1 / x over every cell.
+	for (int i = 0; i < 4096; i++) {
+		const double exact = std::ldexp(1.0 / (4096 + i + 0.5), 28);
+		ASSERT_LE(std::fabs(t.rcp[i] - exact), 1.5 * 8) << i;
+	}
 }
 
 TEST(KernelTables, GradientTablesAreIntelRsqrtps)

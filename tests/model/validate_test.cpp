@@ -225,6 +225,18 @@ TEST(ModelValidation, EachParameterOutOfRangeIsRejectedAndNamed)
 	}
 }
 
+// toolboxCpu is not in the blob (set after loading), so it is checked on the model itself.
+TEST(ModelValidation, ToolboxCpuOutsideTheEnumIsRejectedAndNamed)
+{
+	Model m = test::makeSmallModel();
+	m.params.toolboxCpu = ToolboxCpu::AmdEpyc;
+	EXPECT_TRUE(validateModel(m).ok()) << validateModel(m).message();
+	m.params.toolboxCpu = static_cast<ToolboxCpu>(2);
+	const Status st = validateModel(m);
+	EXPECT_EQ(st.code(), ErrorCode::ModelInvalid);
+	EXPECT_NE(std::string(st.message()).find("toolboxCpu = 2"), std::string::npos) << st.message();
+}
+
 // An LDCF model with its filter shape edited and the weights array resized to match (so
 // that the blob can carry it); only the named rule is broken.
 Model withFilterShape(int32_t nFilters, int32_t filterSize)

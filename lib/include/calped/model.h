@@ -23,6 +23,15 @@ constexpr int kFilterFracBits = 15;
 
 enum class NmsOverlapDenominator : uint32_t { Min = 0, Union = 1 };
 
+// Whose approximate reciprocal instruction (rcpps) the colour conversion reproduces. The
+// toolbox divides with it, and its results differ between CPU makers; on models without
+// colour smoothing (Caltech+) that moves the toolbox's own orientation channels by 1-2% of
+// their mean (docs/parity.md).
+enum class ToolboxCpu : uint32_t {
+	Intel = 0,   // Intel's published rule (the INRIA reference vectors' Xeon)
+	AmdEpyc = 1, // measured on an AMD EPYC of family 26 (the Caltech+ and LDCF references)
+};
+
 // The options of a detector, named as in Dollár's toolbox (detector.opts).
 struct ModelParams {
 	// Window geometry, in pixels (height, width).
@@ -58,6 +67,10 @@ struct ModelParams {
 	// Non-maximum suppression (pNms, type 'maxg').
 	float nmsOverlap = 0.65f;
 	NmsOverlapDenominator nmsOverlapDenominator = NmsOverlapDenominator::Min;
+
+	// Not part of the model (never stored in the blob): which CPU's toolbox results the
+	// channels reproduce. Intel unless set after loading.
+	ToolboxCpu toolboxCpu = ToolboxCpu::Intel;
 };
 
 // Boosted trees stored node-major per tree: node k of tree t is at index t * nodesPerTree + k.

@@ -52,13 +52,13 @@ CALPED_NEON_INLINE Luv4 luv4(const LuvTables &t, uint16x4_t r16, uint16x4_t g16,
 				      vmulq_n_s32(vshrq_n_s32(Z, 2), 3));
 	const uint32x4_t dZero = vceqq_s32(d, vdupq_n_s32(0));
 
-	// Mantissa m in [2048, 4096) and exponent k of d: m = d >> k, or d << -k for k < 0
+	// Mantissa m in [4096, 8192) and exponent k of d: m = d >> k, or d << -k for k < 0
 	// (a negative count shifts the other way). For d = 0, read entry 0 and discard it.
-	const int32x4_t k = vsubq_s32(bitLength4(vreinterpretq_u32_s32(d)), vdupq_n_s32(12));
+	const int32x4_t k = vsubq_s32(bitLength4(vreinterpretq_u32_s32(d)), vdupq_n_s32(13));
 	const int32x4_t m = vreinterpretq_s32_u32(vshlq_u32(vreinterpretq_u32_s32(d), vnegq_s32(k)));
-	const int32x4_t index = vbslq_s32(dZero, vdupq_n_s32(0), vsubq_s32(m, vdupq_n_s32(2048)));
+	const int32x4_t index = vbslq_s32(dZero, vdupq_n_s32(0), vsubq_s32(m, vdupq_n_s32(4096)));
 	const int32x4_t rcp = vreinterpretq_s32_u32(lookup4(t.rcp, index));
-	const int32x4_t shift = vaddq_s32(k, vdupq_n_s32(29 - kLuvRatioQ));
+	const int32x4_t shift = vaddq_s32(k, vdupq_n_s32(30 - kLuvRatioQ));
 	const int32x4_t notZero = vreinterpretq_s32_u32(vmvnq_u32(dZero));
 	const int32x4_t xd = vandq_s32(mulShiftRound(X, rcp, shift), notZero);
 	const int32x4_t yd = vandq_s32(mulShiftRound(Y, rcp, shift), notZero);

@@ -24,10 +24,10 @@ void rgbToLuv_ref(const LuvTables &t, const uint8_t *rgb, ptrdiff_t rgbStride, i
 			int64_t xd = 0, yd = 0; // x / d and y / d in Q20 (kLuvRatioQ)
 			if (d > 0) {
 				int m, k;
-				normalize12(static_cast<uint64_t>(d), m, k);
-				const int64_t r = t.rcp[m - 2048]; // 2^27 / m
-				xd = shiftRound(int64_t(X) * r, 29 - kLuvRatioQ + k);
-				yd = shiftRound(int64_t(Y) * r, 29 - kLuvRatioQ + k);
+				normalize13(static_cast<uint64_t>(d), m, k);
+				const int64_t r = t.rcp[m - 4096]; // 2^28 / m
+				xd = shiftRound(int64_t(X) * r, 30 - kLuvRatioQ + k);
+				yd = shiftRound(int64_t(Y) * r, 30 - kLuvRatioQ + k);
 			}
 			const int64_t uu = shiftRound(L * (52 * xd - t.un13), kLuvRatioQ) - t.minu;
 			const int64_t vv = shiftRound(L * (117 * yd - t.vn13), kLuvRatioQ) - t.minv;

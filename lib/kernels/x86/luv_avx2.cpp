@@ -57,14 +57,14 @@ void luv8(const LuvTables &t, const uint8_t *p, uint16_t *lo, uint16_t *uo, uint
 		_mm256_mullo_epi32(_mm256_srai_epi32(Z, 2), _mm256_set1_epi32(3)));
 	const __m256i dZero = _mm256_cmpeq_epi32(d, zero);
 
-	// Mantissa m in [2048, 4096) and exponent k (may be negative) of d.
-	const __m256i k = _mm256_sub_epi32(bitLength8(d), _mm256_set1_epi32(12));
+	// Mantissa m in [4096, 8192) and exponent k (may be negative) of d.
+	const __m256i k = _mm256_sub_epi32(bitLength8(d), _mm256_set1_epi32(13));
 	const __m256i kPos = _mm256_max_epi32(k, zero), kNeg = _mm256_max_epi32(_mm256_sub_epi32(zero, k), zero);
 	__m256i m = _mm256_sllv_epi32(_mm256_srlv_epi32(d, kPos), kNeg);
-	m = _mm256_blendv_epi8(m, _mm256_set1_epi32(2048), dZero); // keep the gather in range
+	m = _mm256_blendv_epi8(m, _mm256_set1_epi32(4096), dZero); // keep the gather in range
 	const __m256i rcp = _mm256_i32gather_epi32(reinterpret_cast<const int *>(t.rcp),
-						   _mm256_sub_epi32(m, _mm256_set1_epi32(2048)), 4);
-	const __m256i shift = _mm256_add_epi32(k, _mm256_set1_epi32(29 - kLuvRatioQ));
+						   _mm256_sub_epi32(m, _mm256_set1_epi32(4096)), 4);
+	const __m256i shift = _mm256_add_epi32(k, _mm256_set1_epi32(30 - kLuvRatioQ));
 	__m256i xd = mulShiftRoundU(X, rcp, shift);
 	__m256i yd = mulShiftRoundU(Y, rcp, shift);
 	xd = _mm256_andnot_si256(dZero, xd);

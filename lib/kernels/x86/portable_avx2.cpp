@@ -3,6 +3,7 @@
 // (bit-identical by construction and by test), vectorised by the compiler with 256-bit
 // integer operations (32-bit multiplies need SSE4.1 or better, which the baseline build
 // cannot assume).
+#include "opt/hist2_body.h"
 #include "opt/hist_body.h"
 #include "opt/smooth_body.h"
 
@@ -27,6 +28,15 @@ void gradHist4_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t strid
 {
 	gradHist4Body(mag, orient, stride, width, height, nOrients, interpolate, hist, histStride,
 		      scratch);
+}
+
+// The rows of per-pixel contributions vectorise; shrink2 has its own (aggregate2_avx2.cpp).
+void gradHist2_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
+		    int height, int nOrients, bool interpolate, bool spatial, uint16_t *const *hist,
+		    ptrdiff_t histStride, uint32_t *scratch)
+{
+	gradHist2Body(mag, orient, stride, width, height, nOrients, interpolate, spatial, hist,
+		      histStride, scratch);
 }
 
 } // namespace kernels

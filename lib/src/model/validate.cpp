@@ -104,6 +104,8 @@ Status validateChannels(const ModelParams &p)
 	// The toolbox only looks at softBin's sign and parity; the converter canonicalises it.
 	if (!inRange(p.softBin, -2, 1))
 		return invalid("softBin", p.softBin, "must be in [-2, 1]");
+	if (p.toolboxCpu != ToolboxCpu::Intel && p.toolboxCpu != ToolboxCpu::AmdEpyc)
+		return invalid("toolboxCpu", int(p.toolboxCpu), "must be Intel (0) or AmdEpyc (1)");
 	return Status::success();
 }
 

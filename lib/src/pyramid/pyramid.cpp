@@ -134,7 +134,9 @@ Status Pyramid::init(const ModelParams &params, int maxWidth, int maxHeight,
 	channelMargin_ = (params.gradNormRad + 2 + s - 1) / s * s;
 
 	try {
-		kernels::buildLuvTables(luvTables_);
+		kernels::buildLuvTables(luvTables_, params.toolboxCpu == ToolboxCpu::AmdEpyc
+							    ? kernels::RcpRule::AmdEpyc
+							    : kernels::RcpRule::Intel);
 		// The first computed scale is upscale * 2^nOctUp: that image is the largest one
 		// processed.
 		const double up = upscale * double(1 << params.nOctUp);
