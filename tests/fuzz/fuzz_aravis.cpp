@@ -2,9 +2,11 @@
 // What a GigE Vision camera answers, as the Aravis port checks it (ports/aravis/
 // pixel_formats.h, no camera): the stream announced at connection (pixel format, region,
 // payload, the format's name from the camera's description) and then received images'
-// leaders (format, size, row padding, bytes received). An accepted stream must be one the
-// port can allocate and read; an accepted image a view whose every row lies inside the
-// received bytes (each row is read, so ASan sees an overread); a refusal one printable line.
+// leaders (format, size, row padding, bytes received); the input's last bytes are a reply
+// to the GVCP probe (gvcp_probe.h). An accepted stream must be one the port can allocate
+// and read; an accepted image a view whose every row lies inside the received bytes (each
+// row is read, so ASan sees an overread); a refusal one printable line; a reply is the
+// probe's answer only if it is a READREG acknowledge of the probe's request with its value.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +15,7 @@
 #include "fuzz_checks.h"
 #include "fuzz_input.h"
 
+#include "gvcp_probe.h"
 #include "pixel_formats.h"
 
 namespace {
@@ -77,6 +80,20 @@ void checkLeader(fuzz::Input &in, const StreamPlan *plan)
 	readRows(view, rowBytes, bytes.get(), bytes.get() + size);
 }
 
+// The rest of the input as a datagram on the probe's socket, in a block of exactly its size.
+void checkProbeReply(fuzz::Input &in)
+{
+	const size_t n = in.left();
+	std::unique_ptr<uint8_t[]> reply(new uint8_t[n]);
+	if (n)
+		std::memcpy(reply.get(), in.rest(), n);
+	const uint8_t *r = reply.get();
+	const bool expected = n >= 12 && r[2] == 0x00 && r[3] == 0x81 && r[4] == 0 && r[5] == 4 &&
+			      r[6] == (kGvcpProbeRequestId >> 8) && r[7] == (kGvcpProbeRequestId & 0xff);
+	if (isProbeAnswer(r, n) != expected)
+		fuzz::fail("a reply is the probe's answer exactly when it acknowledges its READREG", "");
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -99,6 +116,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		if (st.code() != ErrorCode::CameraError || !fuzz::printableLine(st.message()))
 			fuzz::fail("a refused stream is a CameraError on one printable line", st.message());
 		checkLeader(in, nullptr);
+		checkProbeReply(in);
 		return 0;
 	}
 	PixelFormat format;
@@ -111,5 +129,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	    a.payload > 2 * image + int64_t(kPayloadSlackBytes))
 		fuzz::fail("an accepted stream's size and payload are the camera's and hold one image", "");
 	checkLeader(in, &plan);
+	checkProbeReply(in);
 	return 0;
 }

@@ -28,7 +28,7 @@ const uint32_t kFourccs[] = { kFourccNV12,   kFourccYUV420, kFourccYUYV,   kFour
 			      fourcc('N', 'V', '2', '1'), fourcc('X', 'R', '2', '4'),
 			      fourcc('M', 'J', 'P', 'G'), fourcc('R', 'G', '1', '0') };
 constexpr size_t kFourccCount = sizeof(kFourccs) / sizeof(kFourccs[0]);
-constexpr size_t kMaxMemory = size_t(1) << 18; // per fd: inputs stay fast
+constexpr size_t kMaxMemory = size_t(1) << 16; // per fd: inputs stay fast (frames up to 64 KiB)
 
 // Fails unless every row of view plane `p` (rows of rowBytes, stride apart) is inside
 // `from`; reads each row's first and last byte.

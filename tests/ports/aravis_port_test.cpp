@@ -21,6 +21,7 @@
 #include "fake_gv_camera.h"
 #include "file_source.h"
 #include "frame_numbers.h"
+#include "gvcp_probe.h"
 #include "pixel_formats.h"
 #include "test_data.h"
 
@@ -176,6 +177,19 @@ TEST(AravisStreamPlan, InconsistentAnswersAreRefusedBeforeAllocating)
 	EXPECT_EQ(st.code(), ErrorCode::CameraError);
 	EXPECT_NE(std::strstr(st.message(), "pixel format Mono16?[31m?? (0x01100007)"), nullptr)
 		<< st.message();
+}
+
+// The liveness probe's reply: only the acknowledge of its own READREG, with the value.
+TEST(AravisGvcpProbe, AnswerIsTheAcknowledgeOfTheProbesRead)
+{
+	uint8_t ack[12] = { 0x80, 0x04, 0x00, 0x81, 0x00, 0x04, 0x7e, 0x57, 0, 1, 0, 2 };
+	EXPECT_TRUE(isProbeAnswer(ack, sizeof(ack))); // a busy status still answers
+	EXPECT_FALSE(isProbeAnswer(ack, 8));           // the header without the register
+	ack[7] = 0x58;                                 // another request's acknowledge
+	EXPECT_FALSE(isProbeAnswer(ack, sizeof(ack)));
+	ack[7] = 0x57;
+	ack[3] = 0x83; // WRITEREG_ACK
+	EXPECT_FALSE(isProbeAnswer(ack, sizeof(ack)));
 }
 
 // --- Frame numbers (no camera) ---
