@@ -104,7 +104,7 @@ for t in "${targets[@]}"; do
 	set +e
 	"$exe" "${limit[@]}" "${dict[@]}" -timeout=10 -rss_limit_mb=2048 -max_len="$(max_len_for "$t")" \
 		-print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" 2>&1 |
-		while IFS= read -r line; do
+		while IFS= read -r line || [[ -n $line ]]; do
 			printf '%s\n' "$line"
 			[[ $line == '#'*[[:space:]]INITED[[:space:]]* ]] && printf '%s %s\n' "$EPOCHREALTIME" "$line" >"$work/inited.txt"
 		done >"$work/log.txt"
