@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: BSD-2-Clause
 # The long fuzz run (issue 19): each target (scripts/fuzz.sh, same build and checks) to a
 # number of executions, then the fuzz table -- target, executions, exec/s (the whole run's
-# and after the corpus was loaded), corpus size, findings -- written into docs/testing.md between its fuzz-table markers, with the date,
-# the machine's core count and the command, so the numbers say how they were made.
+# and after the corpus was loaded), corpus size, findings -- written into docs/testing.md
+# between its fuzz-table markers, with the date, the machine's core count, its load average
+# as the target's run ended and the command, so the numbers say how they were made.
 #   scripts/fuzz-long.sh [--runs N] [--max-time S] [TARGET...]
 #     --runs N       executions per target (default 10000000, the issue's figure)
 #     --max-time S   stop a target after S seconds even if N is not reached (default none);
@@ -61,10 +62,14 @@ for t in "${targets[@]}"; do
 	rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
 	# After the corpus was loaded (scripts/fuzz.sh notes when): the target's own speed.
 	loaded=?
-	[[ -f $work/rates.txt ]] && read -r _ _ loaded _ <"$work/rates.txt"
+	load=$(cut -d' ' -f1-3 /proc/loadavg)
+	if [[ -f $work/rates.txt ]]; then
+		read -r _ _ loaded _ ended <"$work/rates.txt"
+		[[ -n $ended ]] && load=$ended
+	fi
 	corpus=$(find "$work/corpus" -type f | wc -l)
 	findings=$(find "$work/artifacts" -type f | wc -l)
-	row[$t]="| \`$t\` | ${execs:-?} | ${rate:-?} | ${loaded:-?} | $corpus | $findings | $when, $(nproc) cores (load $(cut -d' ' -f1-3 /proc/loadavg)), \`--runs $runs${max_time:+ --max-time $max_time}\` |"
+	row[$t]="| \`$t\` | ${execs:-?} | ${rate:-?} | ${loaded:-?} | $corpus | $findings | $when, $(nproc) cores (load average $load as it ended), \`--runs $runs${max_time:+ --max-time $max_time}\` |"
 done
 
 tmp=$(mktemp)

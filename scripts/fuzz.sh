@@ -124,7 +124,8 @@ for t in "${targets[@]}"; do
 		read -r load loaded_rate < <(awk -v b="$began" -v a="$at" -v e="$ended" -v n0="$at_execs" -v n="$execs" \
 			'BEGIN { r = (e - a > 0.5) ? (n - n0) / (e - a) : 0; printf "%.1f %d\n", a - b, r }')
 	fi
-	echo "$execs $rate $loaded_rate $load" >"$work/rates.txt"
+	# The machine's load average as the run ended: these rates depend on it.
+	echo "$execs $rate $loaded_rate $load $(cut -d' ' -f1-3 /proc/loadavg)" >"$work/rates.txt"
 	# The last progress line holds coverage: "#N DONE cov: C ft: F corp: U/S ...".
 	progress=$(grep -E '^#[0-9]+' "$work/log.txt" | tail -1 || true)
 	cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$progress")
