@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-2-Clause
 # The long fuzz run (issue 19): each target (scripts/fuzz.sh, same build and checks) to a
-# number of executions, then the fuzz table -- target, executions, exec/s, corpus size,
-# findings -- written into docs/testing.md between its fuzz-table markers, with the date,
-# the machine's core count and the command, so the numbers say how they were made.
+# number of executions, then the fuzz table -- target, executions, exec/s (the whole run's
+# and after the corpus was loaded), corpus size, findings -- written into docs/testing.md
+# between its fuzz-table markers, with the date, the machine's core count, its load average
+# as the target's run ended and the command, so the numbers say how they were made.
 #   scripts/fuzz-long.sh [--runs N] [--max-time S] [TARGET...]
 #     --runs N       executions per target (default 10000000, the issue's figure)
 #     --max-time S   stop a target after S seconds even if N is not reached (default none);
@@ -59,16 +60,23 @@ for t in "${targets[@]}"; do
 	log=$work/log.txt
 	execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
 	rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+	# After the corpus was loaded (scripts/fuzz.sh notes when): the target's own speed.
+	loaded=?
+	load=$(cut -d' ' -f1-3 /proc/loadavg)
+	if [[ -f $work/rates.txt ]]; then
+		read -r _ _ loaded _ ended <"$work/rates.txt"
+		[[ -n $ended ]] && load=$ended
+	fi
 	corpus=$(find "$work/corpus" -type f | wc -l)
 	findings=$(find "$work/artifacts" -type f | wc -l)
-	row[$t]="| \`$t\` | ${execs:-?} | ${rate:-?} | $corpus | $findings | $when, $(nproc) cores, \`--runs $runs${max_time:+ --max-time $max_time}\` |"
+	row[$t]="| \`$t\` | ${execs:-?} | ${rate:-?} | ${loaded:-?} | $corpus | $findings | $when, $(nproc) cores (load average $load as it ended), \`--runs $runs${max_time:+ --max-time $max_time}\` |"
 done
 
 tmp=$(mktemp)
 {
 	sed -n "1,/$begin/p" "$doc"
-	echo '| target | executions | exec/s | corpus | findings | run |'
-	echo '|---|---|---|---|---|---|'
+	echo '| target | executions | exec/s | after loading | corpus | findings | run |'
+	echo '|---|---|---|---|---|---|---|'
 	for t in $(printf '%s\n' "${!row[@]}" | sort); do
 		echo "${row[$t]}"
 	done

@@ -172,22 +172,28 @@ Status AravisSource::connect()
 		return fail(ErrorCode::CameraError, "cannot read the pixel format");
 	const char *pfName = arv_camera_get_pixel_format_as_string(camera_, nullptr);
 	formatName_ = pfName ? pfName : "?";
-	PixelFormat format;
-	if (!pixelFormatFromPfnc(pfnc, format)) {
-		st = Status::error(ErrorCode::CameraError,
-				   "camera %s: pixel format %s (0x%08x) is not one calped reads without "
-				   "conversion; choose Mono8, RGB8, BGR8, YUV422_YUYV_Packed or Bayer*8",
-				   who.c_str(), formatName_.c_str(), static_cast<unsigned>(pfnc));
+	AnnouncedStream announced;
+	announced.pfnc = pfnc;
+	gint x = 0, y = 0, w = 0, h = 0;
+	arv_camera_get_region(camera_, &x, &y, &w, &h, &error);
+	if (!error)
+		announced.payload = arv_camera_get_payload(camera_, &error);
+	if (error)
+		return fail(ErrorCode::CameraError, "cannot read the region and payload");
+	announced.width = w;
+	announced.height = h;
+	// Checked before a buffer is sized from it: a camera's registers are outside input.
+	StreamPlan plan;
+	const Status planned = planStream(announced, formatName_.c_str(), plan);
+	if (!planned.ok()) {
+		st = Status::error(planned.code(), "camera %s: %s", who.c_str(), planned.message());
 		restore();
 		disconnect();
 		return st;
 	}
-	gint x = 0, y = 0;
-	arv_camera_get_region(camera_, &x, &y, &width_, &height_, &error);
-	if (!error)
-		payload_ = arv_camera_get_payload(camera_, &error);
-	if (error)
-		return fail(ErrorCode::CameraError, "cannot read the region and payload");
+	width_ = plan.width;
+	height_ = plan.height;
+	payload_ = plan.payload;
 
 	stream_ = arv_camera_create_stream(camera_, nullptr, nullptr, &error);
 	if (!stream_)

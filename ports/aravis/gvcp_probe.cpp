@@ -19,9 +19,25 @@ constexpr uint8_t kGvcpKey = 0x42;
 constexpr uint8_t kFlagAckRequired = 0x01;
 constexpr uint16_t kReadRegCmd = 0x0080;
 constexpr uint16_t kReadRegAck = 0x0081;
-constexpr uint16_t kRequestId = 0x7e57;
+constexpr uint16_t kRequestId = kGvcpProbeRequestId;
+
+uint16_t bigEndian16(const uint8_t *p)
+{
+	return static_cast<uint16_t>((p[0] << 8) | p[1]);
+}
 
 } // namespace
+
+bool isProbeAnswer(const uint8_t *reply, size_t n)
+{
+	// Header: status, answer, payload length, ack id (big-endian), then the payload: for a
+	// READREG_ACK the 4 bytes of each register read (one here).
+	if (!reply || n < 8 || bigEndian16(reply + 2) != kReadRegAck ||
+	    bigEndian16(reply + 6) != kRequestId)
+		return false;
+	const size_t length = bigEndian16(reply + 4);
+	return length == 4 && n >= 8 + length;
+}
 
 GvcpProbe probeGvcp(const char *ipv4, int timeoutMs)
 {
@@ -50,7 +66,7 @@ GvcpProbe probeGvcp(const char *ipv4, int timeoutMs)
 				const ssize_t n = recv(fd, ack, sizeof(ack), 0);
 				if (n < 0 && errno == ECONNREFUSED)
 					result = GvcpProbe::Refused;
-				else if (n >= 8 && ((ack[2] << 8) | ack[3]) == kReadRegAck)
+				else if (n > 0 && isProbeAnswer(ack, static_cast<size_t>(n)))
 					result = GvcpProbe::Answers;
 			}
 		} else if (errno == ECONNREFUSED) {

@@ -294,9 +294,8 @@ Status LibcameraSource::allocateAndMap()
 		Status st = mappings_[i].map(planes, count, what);
 		if (!st.ok())
 			return st;
-		st = frameView(cfg.pixelFormat, static_cast<int>(cfg.size.width),
-			       static_cast<int>(cfg.size.height), cfg.stride, mappings_[i].planes(),
-			       count, encoding, views_[i]);
+		st = frameView(cfg.pixelFormat, cfg.size.width, cfg.size.height, cfg.stride,
+			       mappings_[i].planes(), count, encoding, views_[i]);
 		if (!st.ok())
 			return st;
 

@@ -52,14 +52,12 @@ int64_t memorySize(int fd)
 
 } // namespace
 
-Status BufferMapping::map(const PlaneDesc *planes, int count, const char *what)
+Status checkPlanes(const PlaneDesc *planes, int count, const int64_t *memorySizes,
+		   const char *what)
 {
-	unmap();
-	if (count < 1 || count > kMaxPlanes)
+	if (count < 1 || count > BufferMapping::kMaxPlanes)
 		return Status::error(ErrorCode::CameraError, "%s has %d planes (calped maps 1 to %d)",
-				     what, count, kMaxPlanes);
-
-	// Validate every plane before mapping anything.
+				     what, count, BufferMapping::kMaxPlanes);
 	for (int i = 0; i < count; ++i) {
 		const PlaneDesc &p = planes[i];
 		if (p.fd < 0)
@@ -72,7 +70,7 @@ Status BufferMapping::map(const PlaneDesc *planes, int count, const char *what)
 					     "%s plane %d: offset %llu + length %llu overflows", what, i,
 					     static_cast<unsigned long long>(p.offset),
 					     static_cast<unsigned long long>(p.length));
-		int64_t size = memorySize(p.fd);
+		const int64_t size = memorySizes[i];
 		if (size >= 0 && p.offset + p.length > static_cast<uint64_t>(size))
 			return Status::error(ErrorCode::CameraError,
 					     "%s plane %d (offset %llu, length %llu) ends past its memory's %lld bytes",
@@ -80,6 +78,19 @@ Status BufferMapping::map(const PlaneDesc *planes, int count, const char *what)
 					     static_cast<unsigned long long>(p.length),
 					     static_cast<long long>(size));
 	}
+	return Status::success();
+}
+
+Status BufferMapping::map(const PlaneDesc *planes, int count, const char *what)
+{
+	unmap();
+	// Validate every plane before mapping anything.
+	int64_t sizes[kMaxPlanes];
+	for (int i = 0; i < count && i < kMaxPlanes; ++i)
+		sizes[i] = planes[i].fd >= 0 ? memorySize(planes[i].fd) : -1;
+	const Status checked = checkPlanes(planes, count, sizes, what);
+	if (!checked.ok())
+		return checked;
 
 	const uint64_t page = static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
 	for (int i = 0; i < count; ++i) {

@@ -25,6 +25,14 @@ struct MappedPlane {
 	size_t length = 0;
 };
 
+// Checks a buffer's plane descriptions before anything is mapped (pure: fuzzed by
+// tests/fuzz/fuzz_libcamera.cpp). `memorySizes[i]` is the size of plane i's memory (its
+// fd's), or -1 when the fd cannot tell. Errors (CameraError, naming `what` and the plane):
+// no planes or more than BufferMapping::kMaxPlanes, an invalid fd, an empty plane, offset +
+// length overflowing, a plane reaching past the end of its memory.
+Status checkPlanes(const PlaneDesc *planes, int count, const int64_t *memorySizes,
+		   const char *what);
+
 class BufferMapping
 {
 public:

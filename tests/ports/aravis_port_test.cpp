@@ -21,6 +21,7 @@
 #include "fake_gv_camera.h"
 #include "file_source.h"
 #include "frame_numbers.h"
+#include "gvcp_probe.h"
 #include "pixel_formats.h"
 #include "test_data.h"
 
@@ -121,6 +122,74 @@ TEST(AravisPixelFormats, ViewHonoursPaddingAndRefusesShortBuffers)
 	EXPECT_FALSE(viewReceivedImage(PixelFormat::NV12, data.data(), data.size(), 5, 3, 0, v));
 	ASSERT_TRUE(viewReceivedImage(PixelFormat::YUYV, data.data(), data.size(), 5, 3, 0, v));
 	EXPECT_EQ(v.strides[0], 12); // 3 pairs of 4 bytes
+}
+
+// A leader's sides and padding are network data: beyond kMaxCameraSide / kMaxRowPadding
+// they are refused before any int arithmetic (fuzz target aravis: 3 x INT_MAX overflowed
+// the row size; padding 2^31 - 8 wrapped the int stride negative; tests/fuzz/regressions/aravis/).
+TEST(AravisPixelFormats, ViewRefusesSidesAndPaddingBeyondTheirLimits)
+{
+	std::vector<uint8_t> data(1 << 16, 0);
+	ImageView v;
+	EXPECT_FALSE(viewReceivedImage(PixelFormat::RGB8, data.data(), data.size(), INT32_MAX, 1, 0, v));
+	EXPECT_FALSE(viewReceivedImage(PixelFormat::Gray8, data.data(), data.size(), 8, 1, INT32_MAX - 7, v));
+	EXPECT_FALSE(viewReceivedImage(PixelFormat::Gray8, data.data(), data.size(), 8, 1, kMaxRowPadding + 1, v));
+	EXPECT_FALSE(viewReceivedImage(PixelFormat::Gray8, data.data(), data.size(), 1, kMaxCameraSide + 1, 0, v));
+	ASSERT_TRUE(viewReceivedImage(PixelFormat::Gray8, data.data(), data.size(), 8, 1, kMaxRowPadding, v));
+	EXPECT_EQ(v.strides[0], 8 + kMaxRowPadding);
+}
+
+// The stream the camera announces is checked before a buffer is sized from it.
+TEST(AravisStreamPlan, InconsistentAnswersAreRefusedBeforeAllocating)
+{
+	StreamPlan plan;
+	AnnouncedStream a;
+	a.pfnc = ARV_PIXEL_FORMAT_RGB_8_PACKED;
+	a.width = 640;
+	a.height = 480;
+	a.payload = 640 * 480 * 3;
+	ASSERT_TRUE(planStream(a, "RGB8", plan).ok());
+	EXPECT_EQ(plan.format, PixelFormat::RGB8);
+	EXPECT_EQ(plan.payload, size_t(640 * 480 * 3));
+	a.payload = 640 * 480 * 3 + 4096; // chunk data after the image
+	EXPECT_TRUE(planStream(a, "RGB8", plan).ok());
+
+	a.payload = 640 * 480; // a Mono8 payload for an RGB8 image
+	Status st = planStream(a, "RGB8", plan);
+	EXPECT_EQ(st.code(), ErrorCode::CameraError);
+	EXPECT_NE(std::strstr(st.message(), "payload of 307200 bytes does not fit a 640x480 RGB8 image of 921600"),
+		  nullptr) << st.message();
+	a.payload = int64_t(1) << 32; // 4 GiB per buffer
+	EXPECT_EQ(planStream(a, "RGB8", plan).code(), ErrorCode::CameraError);
+	a.payload = 921600;
+	a.height = 0;
+	EXPECT_NE(std::strstr(planStream(a, "RGB8", plan).message(), "region is 640x0"), nullptr);
+	a.height = -480;
+	EXPECT_FALSE(planStream(a, "RGB8", plan).ok());
+	a.height = 480;
+	a.width = kMaxCameraSide + 1;
+	EXPECT_FALSE(planStream(a, "RGB8", plan).ok());
+
+	// A format calped cannot lend; the camera's name for it is outside text.
+	a.width = 640;
+	a.pfnc = ARV_PIXEL_FORMAT_MONO_16;
+	st = planStream(a, "Mono16\x1b[31m\xff\n", plan);
+	EXPECT_EQ(st.code(), ErrorCode::CameraError);
+	EXPECT_NE(std::strstr(st.message(), "pixel format Mono16?[31m?? (0x01100007)"), nullptr)
+		<< st.message();
+}
+
+// The liveness probe's reply: only the acknowledge of its own READREG, with the value.
+TEST(AravisGvcpProbe, AnswerIsTheAcknowledgeOfTheProbesRead)
+{
+	uint8_t ack[12] = { 0x80, 0x04, 0x00, 0x81, 0x00, 0x04, 0x7e, 0x57, 0, 1, 0, 2 };
+	EXPECT_TRUE(isProbeAnswer(ack, sizeof(ack))); // a busy status still answers
+	EXPECT_FALSE(isProbeAnswer(ack, 8));           // the header without the register
+	ack[7] = 0x58;                                 // another request's acknowledge
+	EXPECT_FALSE(isProbeAnswer(ack, sizeof(ack)));
+	ack[7] = 0x57;
+	ack[3] = 0x83; // WRITEREG_ACK
+	EXPECT_FALSE(isProbeAnswer(ack, sizeof(ack)));
 }
 
 // --- Frame numbers (no camera) ---

@@ -246,6 +246,59 @@ TEST(LibcameraFormatMap, EmptySizeIsAnError)
 		  ErrorCode::CameraError);
 }
 
+// The table in frame_layout.h is libcamera's: every fourcc is the libcamera format's.
+TEST(LibcameraFormatMap, FourccsAreLibcamerasFormats)
+{
+	EXPECT_EQ(kFourccNV12, lf::NV12.fourcc());
+	EXPECT_EQ(kFourccYUV420, lf::YUV420.fourcc());
+	EXPECT_EQ(kFourccYUYV, lf::YUYV.fourcc());
+	EXPECT_EQ(kFourccRGB888, lf::RGB888.fourcc());
+	EXPECT_EQ(kFourccBGR888, lf::BGR888.fourcc());
+	EXPECT_EQ(kFourccR8, lf::R8.fourcc());
+	EXPECT_EQ(kFourccSRGGB8, lf::SRGGB8.fourcc());
+	EXPECT_EQ(kFourccSGRBG8, lf::SGRBG8.fourcc());
+	EXPECT_EQ(kFourccSGBRG8, lf::SGBRG8.fourcc());
+	EXPECT_EQ(kFourccSBGGR8, lf::SBGGR8.fourcc());
+	// A known fourcc with a modifier (a tiled or compressed layout) is not that format.
+	PixelFormat f;
+	EXPECT_FALSE(calpedFormatFor(libcamera::PixelFormat(kFourccNV12, 1), f));
+}
+
+// Sizes as libcamera gives them (unsigned): a side past kMaxFrameSide is refused, not
+// wrapped into int or multiplied past INT_MAX (fuzz target libcamera: 3 x 0x60000000
+// overflowed int in the row size; tests/fuzz/regressions/libcamera/).
+TEST(LibcameraFormatMap, SidesBeyondTheMaximumAreRefused)
+{
+	Buffer b({ 1 << 16 });
+	ImageView v;
+	Status st = frameView(lf::RGB888, 0x60000000, 1, 4096, b.planes, 1, YuvEncoding::Bt601Limited, v);
+	EXPECT_EQ(st.code(), ErrorCode::CameraError);
+	EXPECT_NE(std::strstr(st.message(), "1610612736x1"), nullptr) << st.message();
+	EXPECT_EQ(frameView(lf::NV12, 4294967295u, 2, 4096, b.planes, 1, YuvEncoding::Bt601Limited, v).code(),
+		  ErrorCode::CameraError);
+	EXPECT_EQ(frameView(lf::R8, 16, kMaxFrameSide + 1, 16, b.planes, 1, YuvEncoding::Bt601Limited, v).code(),
+		  ErrorCode::CameraError);
+	EXPECT_TRUE(frameView(lf::R8, 16, 16, 16, b.planes, 1, YuvEncoding::Bt601Limited, v).ok());
+}
+
+// The plane descriptions are checked before anything is mapped, without a file.
+TEST(LibcameraFormatMap, PlanesAreCheckedAgainstTheirMemoryBeforeMapping)
+{
+	const PlaneDesc fits[2] = { { 5, 0, 3072 }, { 5, 3072, 1536 } };
+	const int64_t sizes[2] = { 4608, 4608 };
+	EXPECT_TRUE(checkPlanes(fits, 2, sizes, "buffer 0").ok());
+	const int64_t smaller[2] = { 4607, 4607 };
+	Status st = checkPlanes(fits, 2, smaller, "buffer 0");
+	EXPECT_EQ(st.code(), ErrorCode::CameraError);
+	EXPECT_NE(std::strstr(st.message(), "buffer 0 plane 1"), nullptr) << st.message();
+	const int64_t unknown[2] = { -1, -1 }; // the fd cannot tell: not checked
+	EXPECT_TRUE(checkPlanes(fits, 2, unknown, "buffer 0").ok());
+	const PlaneDesc overflow[1] = { { 5, UINT64_MAX - 10, 11 } };
+	EXPECT_NE(std::strstr(checkPlanes(overflow, 1, sizes, "b").message(), "overflows"), nullptr);
+	EXPECT_FALSE(checkPlanes(fits, 0, sizes, "b").ok());
+	EXPECT_FALSE(checkPlanes(fits, BufferMapping::kMaxPlanes + 1, sizes, "b").ok());
+}
+
 TEST(LibcameraFormatMap, YuvEncodingFromColourSpace)
 {
 	using CS = libcamera::ColorSpace;
