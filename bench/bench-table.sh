@@ -71,12 +71,17 @@ msPerFrame() { # config threads
 		$(flagsOf "$1") "${t[@]}" 2>&1 | awk '$1 == "total" { print $2 }'
 }
 
+# Instructions are counted on one thread: more threads add the split rectangles' margins
+# and the pool's spinning, and valgrind and qemu-user run the threads one at a time anyway.
+oneThread=()
+((${#threads[@]} > 1)) && oneThread=(--threads 1)
+
 # M instructions per detect() call on x86 (callgrind).
 x86Insns() { # config
 	# shellcheck disable=SC2046
 	valgrind --tool=callgrind --callgrind-out-file="$tmp/$1.cg" \
 		--toggle-collect='calped::Detector::detect*' "$bench" --model "$model" \
-		--frames data/pets/frames --first "$first" --count 3 --repeat 1 $(flagsOf "$1") \
+		--frames data/pets/frames --first "$first" --count 3 --repeat 1 $(flagsOf "$1") "${oneThread[@]}" \
 		>/dev/null 2>&1
 	callgrind_annotate "$tmp/$1.cg" 2>/dev/null |
 		awk '/PROGRAM TOTALS/ { gsub(",", "", $1); printf "%.1f", $1 / 4 / 1e6 }'
@@ -99,7 +104,7 @@ armInsns() { # target config
 		# shellcheck disable=SC2046
 		"$qemu" -d plugin -plugin "$plugin" -L "$runtime" -E "LD_LIBRARY_PATH=$runtime/lib" \
 			"$dir/bench/bench_detect" --model "$model" --frames data/pets/frames \
-			--first "$first" --count 2 --repeat "$1" $(flagsOf "$2") 2>&1 >/dev/null |
+			--first "$first" --count 2 --repeat "$1" $(flagsOf "$2") "${oneThread[@]}" 2>&1 >/dev/null |
 			awk '/^insns / { print $2 }'
 	}
 	local one more
