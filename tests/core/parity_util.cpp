@@ -98,7 +98,7 @@ void expectDetectionParity(const std::string &modelBlob, const std::string &refP
 	st = Detector::create(model, cfg, det);
 	ASSERT_TRUE(st.ok()) << st.message();
 
-	// CALPED_PARITY_FRAMES shortens the run (the sanitizer build uses it).
+	// CALPED_PARITY_FRAMES shortens the run (by hand: nothing in the test command sets it).
 	if (const char *env = std::getenv("CALPED_PARITY_FRAMES"))
 		frames = std::clamp(std::atoi(env), 1, frames);
 	auto ref = readDetections(refPath);
