@@ -47,7 +47,7 @@ struct Settings {
 	ResizeAt resizeAt = ResizeAt::Pyramid;
 	PyramidLevels levels = PyramidLevels::Placed;
 	bool rejectStatic = false;
-	int threads = 1; // DetectorConfig::threads
+	int threads = 0; // DetectorConfig::threads; 0: recommendedThreads()
 	double minScore = kDefaultMinScore;
 	bool draw = false;
 	std::string mqtt, cameraId; // mqtt://HOST[:PORT]/TOPIC (docs/mqtt.md); empty: none
@@ -212,7 +212,7 @@ DetectorConfig configFor(const Settings &s, Session &session, int width, int hei
 	c.resize = s.resize;
 	c.resizeAt = s.resizeAt;
 	c.method = s.method;
-	c.threads = s.threads;
+	c.threads = s.threads > 0 ? s.threads : recommendedThreads();
 	if (session.hasCamera)
 		c.camera = &session.camera;
 	// Refused with the generic method: set only where the calibrated method runs.
@@ -598,8 +598,8 @@ static void gst_calped_class_init(GstCalpedClass *klass)
 	g_object_class_install_property(gobject, PROP_THREADS,
 		g_param_spec_int("threads", "Threads",
 				 "threads the detector works on, the streaming thread included "
-				 "(the detections do not depend on it)",
-				 1, 64, 1, kReady));
+				 "(0: the online cores, at most 4; the detections do not depend on it)",
+				 0, 64, 0, kReady));
 	g_object_class_install_property(gobject, PROP_MIN_SCORE,
 		g_param_spec_double("min-score", "Minimum score",
 				    "report only detections scoring at least this (default: all)",

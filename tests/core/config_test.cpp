@@ -3,8 +3,10 @@
 // of range or that the rest of the configuration would ignore is refused by name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
+#include <unistd.h>
 
 #include <calped/calped.h>
 
@@ -238,6 +240,13 @@ TEST(DetectorConfig, MemoryBeyondTheBudgetIsRefusedBeforeAllocating)
 // LDCF's filter stage is counted once per thread: on a PETS frame at resize 2, one filtered
 // channel of the largest padded level (596 x 786 cells of 2 pixels) and the 40 half-size
 // ones, next to the same options without filters.
+TEST(DetectorConfig, RecommendedThreadsAreTheOnlineCoresAtMostFour)
+{
+	const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+	EXPECT_EQ(recommendedThreads(), int(std::clamp(cores, 1L, 4L)));
+	EXPECT_EQ(DetectorConfig().threads, 1); // the library's own default stays one thread
+}
+
 TEST(DetectorConfig, MemoryEstimateCountsLdcfFiltersPerThread)
 {
 	const Model ldcf = test::randomLdcfModel(1);

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <unistd.h>
 
 #include "file_io.h"
 
@@ -34,11 +33,7 @@ int DetectorOptions::detectorThreads() const
 {
 	if (threads > 0)
 		return int(threads);
-	// The online cores, at most 4: a camera board has four, and each thread reserves its
-	// own scratch (DetectorConfig::memoryBudgetBytes counts it) for a frame's few large
-	// sections, which more threads split no further.
-	const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-	return int(std::clamp(cores, 1L, 4L));
+	return recommendedThreads();
 }
 
 std::vector<OptionSpec> detectorOptionTable(DetectorFlags which)

@@ -124,6 +124,8 @@ struct DetectorConfig {
 	// any value. More threads than cores only adds waiting. Each thread has its own
 	// scratch (the pyramid's per-level buffers and a candidate lane; pages it never
 	// writes are not resident).
+	// The library's default is 1; the programs and the GStreamer element take
+	// recommendedThreads().
 	int threads = 1;
 
 	// A camera (copied by create()) gives detections their ground position and world
@@ -148,6 +150,12 @@ struct DetectorConfig {
 // One detection in input-image pixels: top-left corner, size, classifier score. With a
 // calibration, also where the person stands on the ground (metres, world x and y) and
 // the box's world height (metres); NaN without one, or when the foot is above the horizon.
+// The threads a detector should use on this machine: the online cores, at most 4 (a camera
+// board has four; each thread reserves its own scratch, which memoryBudgetBytes counts, and
+// a frame's few large sections split no further). What the programs' --threads and the
+// GStreamer element's `threads` default to.
+int recommendedThreads();
+
 struct Detection {
 	float x = 0, y = 0, w = 0, h = 0;
 	float score = 0;

@@ -4,7 +4,10 @@
 #include <calped/calibration.h>
 #include <calped/detector.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include <unistd.h>
 
 #include "input/input_stage.h"
 
@@ -104,6 +107,12 @@ Status DetectorConfig::validate() const
 			return Status::error(ErrorCode::InvalidArgument, "staticRejection.warmupFrames %d must be >= 1", s.warmupFrames);
 	}
 	return Status::success();
+}
+
+int recommendedThreads()
+{
+	const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+	return int(std::clamp(cores, 1L, 4L));
 }
 
 } // namespace calped
