@@ -9,7 +9,12 @@
 // scene rejection (and its gate of the sparse grid), whose background takes 50 frames.
 // --format converts the decoded frames to a camera pixel format first (NV12, YUYV,
 // BayerRGGB8, ...: docs/pixel-formats.md), so the detector's input conversion is timed.
+// --alternate-threads 1,2: one detector per thread count, each frame detected by every one
+// in turn (the order rotating from frame to frame), so that this machine's drift in speed
+// falls on all alike; prints wall-clock ms per frame and the speed-ups, and fails unless
+// every detector's detections are the same as the first's.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -46,6 +51,81 @@ double mean(const std::vector<double> &v)
 	return v.empty() ? 0 : s / v.size();
 }
 
+// "1,2,4" -> {1, 2, 4}; each 1..64.
+bool parseThreadList(const std::string &text, std::vector<long> &out, std::string &error)
+{
+	out.clear();
+	size_t at = 0;
+	while (at <= text.size()) {
+		const size_t comma = std::min(text.find(',', at), text.size());
+		const std::string item = text.substr(at, comma - at);
+		char *end = nullptr;
+		const long n = std::strtol(item.c_str(), &end, 10);
+		if (item.empty() || *end != '\0' || n < 1 || n > 64) {
+			error = "--alternate-threads takes thread counts 1..64 separated by commas, got \"" + text + "\"";
+			return false;
+		}
+		out.push_back(n);
+		at = comma + 1;
+	}
+	return true;
+}
+
+bool sameDetections(const Detections &a, const std::vector<Detection> &b)
+{
+	return size_t(a.count) == b.size() &&
+	       (b.empty() || std::memcmp(a.items, b.data(), b.size() * sizeof(Detection)) == 0);
+}
+
+// Every frame through every detector in turn; returns the exit status.
+int alternate(std::vector<std::unique_ptr<Detector>> &dets, const std::vector<long> &threads,
+	      const std::vector<test::FormattedImage> &inputs, long repeat)
+{
+	using Clock = std::chrono::steady_clock;
+	const size_t n = dets.size();
+	std::vector<std::vector<double>> ms(n);
+	std::vector<double> sum(n, 0.0);
+	std::vector<Detection> reference;
+	Detections out;
+	for (auto &d : dets)
+		d->detect(inputs[0].view(), out); // warm-up
+	size_t turn = 0, differing = 0;
+	for (long r = 0; r < repeat; r++)
+		for (const auto &f : inputs) {
+			std::vector<bool> same(n, true);
+			for (size_t k = 0; k < n; k++) {
+				const size_t d = (turn + k) % n;
+				const auto t0 = Clock::now();
+				const Status st = dets[d]->detect(f.view(), out);
+				const double took = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+				if (!st.ok()) {
+					std::fprintf(stderr, "bench_detect: %s\n", st.message());
+					return 1;
+				}
+				ms[d].push_back(took);
+				sum[d] += took;
+				if (k == 0)
+					reference.assign(out.begin(), out.end());
+				else if (!sameDetections(out, reference))
+					same[d] = false;
+			}
+			differing += size_t(std::count(same.begin(), same.end(), false));
+			turn++;
+		}
+	std::printf("side by side: every frame detected by each thread count in turn (%zu frames)\n\n", turn);
+	std::printf("| threads | ms/frame median | ms/frame mean | frames/s | speed-up |\n");
+	std::printf("|---:|---:|---:|---:|---:|\n");
+	for (size_t d = 0; d < n; d++)
+		std::printf("| %ld | %.2f | %.2f | %.1f | %.2fx |\n", threads[d], median(ms[d]), mean(ms[d]),
+			    1000.0 * double(turn) / sum[d], sum[0] / sum[d]);
+	if (differing) {
+		std::printf("\ndetections DIFFER between thread counts on %zu frame runs\n", differing);
+		return 1;
+	}
+	std::printf("\ndetections identical for every thread count on every frame\n");
+	return 0;
+}
+
 const apps::ProgramInfo kProgram = {
 	"bench_detect",
 	"usage: bench_detect --model BLOB --frames DIR [options]\n"
@@ -65,6 +145,8 @@ int main(int argc, char **argv)
 		{ "first", "F", "start at the F-th frame (1-based, default 1)" },
 		{ "count", "N", "frames to time (default 50)" },
 		{ "repeat", "K", "detect each frame K times (default 1)" },
+		{ "alternate-threads", "LIST", "time these thread counts (e.g. 1,2) side by side: every frame\n"
+					       "detected by each in turn; fails unless their detections agree" },
 		{ "format", "NAME", "convert the frames to this camera pixel format first (NV12, YUYV,\n"
 				    "BayerRGGB8, ...; default RGB8), so the input conversion is timed" },
 	};
@@ -78,12 +160,15 @@ int main(int argc, char **argv)
 	if (rc >= 0)
 		return rc;
 	std::string framesDir, formatName = "RGB8", error;
+	std::vector<long> alternateThreads;
 	long first = 1, count = 50, repeat = 1; // first: 1-based, in name order
 	for (const apps::ParsedOption &o : args.options) {
 		if (o.name == "frames") {
 			framesDir = o.value;
 		} else if (o.name == "format") {
 			formatName = o.value;
+		} else if (o.name == "alternate-threads") {
+			parseThreadList(o.value, alternateThreads, error);
 		} else {
 			apps::wholeIn(o, 1, 1000000, o.name == "first" ? first : o.name == "count" ? count : repeat,
 				      error);
@@ -139,6 +224,19 @@ int main(int argc, char **argv)
 	std::vector<test::FormattedImage> inputs;
 	for (const auto &f : frames)
 		inputs.push_back(test::encodeImage(f.pixels.data(), f.width, f.height, format));
+
+	if (!alternateThreads.empty()) {
+		std::vector<std::unique_ptr<Detector>> dets(alternateThreads.size());
+		for (size_t d = 0; d < dets.size(); d++) {
+			options.threads = alternateThreads[d];
+			if (!apps::createDetector(loaded.model, options, frames[0].width, frames[0].height,
+						  loaded.hasCamera ? &loaded.camera : nullptr, dets[d], error)) {
+				std::fprintf(stderr, "bench_detect: %s\n", error.c_str());
+				return 1;
+			}
+		}
+		return alternate(dets, alternateThreads, inputs, repeat);
+	}
 
 	// Static rejection (--reject-static) needs consecutive frames of one camera.
 	std::unique_ptr<Detector> det;

@@ -8,9 +8,10 @@
 # PNG decodes while the current frame is detected), the detector's own mean ms per frame,
 # the summed user and system CPU seconds, and the speed-ups over one thread. Then the
 # detector alone: build/bench/bench_detect with the same flags over the same frames decoded
-# into memory first (no PNG decoding beside it), median ms per frame and its speed-up, one
-# thread count after the other in the same run. Builds nothing; wall-clock numbers are
-# only meaningful on an otherwise idle machine.
+# into memory first (no PNG decoding beside it), one detector per thread count and every
+# frame detected by each in turn (--alternate-threads), so that the machine's drift in
+# speed falls on all alike; its detections must agree too. Builds nothing; wall-clock
+# numbers are only meaningful on an otherwise idle machine.
 #   bash bench/threads.sh [FRAMES] [THREADS...]   (default: all 795 frames; 1 2 3 4)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -65,17 +66,10 @@ done
 bench=${CALPED_BUILD_DIR:-build}/bench/bench_detect
 if [[ -x $bench ]]; then
 	echo
-	echo "The detector alone (bench_detect, frames 1-$frames in memory, median of the frames):"
+	echo "The detector alone (bench_detect --alternate-threads, frames 1-$frames in memory):"
 	echo
-	echo "| threads | ms/frame | frames/s | speed-up |"
-	echo "|---:|---:|---:|---:|"
-	base=
-	for n in "${counts[@]}"; do
-		ms=$("$bench" --model "$model" --calib "$calib" --threads "$n" --frames data/pets/frames \
-			--count "$frames" | awk '$1 == "total" { print $2 }')
-		[[ -n $base ]] || base=$ms
-		awk -v n="$n" -v ms="$ms" -v b="$base" \
-			'BEGIN { printf "| %s | %.2f | %.1f | %.2fx |\n", n, ms, 1000 / ms, b / ms }'
-	done
+	list=$(IFS=,; echo "${counts[*]}")
+	"$bench" --model "$model" --calib "$calib" --frames data/pets/frames --count "$frames" \
+		--alternate-threads "$list" | sed -n '/^side by side/,$p' || status=1
 fi
 exit $status

@@ -219,20 +219,24 @@ private:
 	int doneNext_[kMaxLevels] = {};
 	LevelRect needRects_[kMaxLevels][kMaxRects];
 	int needCount_[kMaxLevels] = {};
-	// computeRects(): the rectangles still to compute (level, index into needRects_, the
-	// rows of it this task computes: all of them, or a piece when the rectangle is split
-	// over the threads), largest first, and each one's outcome.
+	// computeRects(): the rectangles still to compute (level, index into needRects_, its
+	// rows, its cells), then the same cut into parts: segment s of the frame's work is
+	// parts_[segmentBegin_[s] .. segmentBegin_[s + 1]), and each part's outcome.
 	struct RectTask {
 		int level, index;
 		CellRange rows;
 		long cells;
 	};
-	static constexpr int kMaxRectPieces = 64; // tasks added by splitting, per frame demand
-	RectTask tasks_[kMaxLevels * kMaxRects + kMaxRectPieces];
-	bool taskFailed_[kMaxLevels * kMaxRects + kMaxRectPieces];
-	// Cuts the largest tasks into row pieces until each is at most about 1/(2 workers) of
-	// the whole: one rectangle can be most of a frame's work.
-	int splitRectTasks(int tasks);
+	static constexpr int kMaxSegments = 64; // per frame demand; each adds at most one cut
+	RectTask tasks_[kMaxLevels * kMaxRects];
+	RectTask parts_[kMaxLevels * kMaxRects + kMaxSegments];
+	int segmentBegin_[kMaxLevels * kMaxRects + kMaxSegments + 1];
+	bool partFailed_[kMaxLevels * kMaxRects + kMaxSegments];
+	// With more than one worker, cuts the rectangles' rows into about 2 x workers
+	// segments of equal cells (one may end one rectangle and start the next), so that
+	// the threads finish together: one rectangle can be most of a frame's work. With one,
+	// each rectangle is its own segment. Returns the number of segments.
+	int cutIntoSegments(int tasks);
 	CellRange fullRows_; // rows of the whole-image LUV planes the levels read
 	int halfLevel_ = -1; // the computed level at scale 1/2, source of smaller octaves
 	int frameDemands_ = 0; // compute() calls since beginFrame()

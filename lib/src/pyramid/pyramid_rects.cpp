@@ -62,38 +62,33 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 			tasks_[tasks++] = RectTask{ i, k, r.rows, long(r.rows.size()) * r.cols.size() };
 		}
 	convertLuvRows(input, colour);
-	tasks = splitRectTasks(tasks);
-	// Largest first, so that the threads finish together; each rectangle is computed
-	// into its own cells of the store, the same on any thread.
-	// (std::sort: stable_sort may allocate.)
-	std::sort(tasks_, tasks_ + tasks, [](const RectTask &a, const RectTask &b) {
-		if (a.cells != b.cells)
-			return a.cells > b.cells;
-		if (a.level != b.level)
-			return a.level < b.level;
-		return a.index != b.index ? a.index < b.index : a.rows.begin < b.rows.begin;
-	});
-	auto one = [&](int t, int worker) {
-		const RectTask &task = tasks_[t];
-		const LevelRect piece{ task.rows, needRects_[task.level][task.index].cols };
-		taskFailed_[t] = !computeRect(input, task.level, piece, *scratch_[size_t(worker)]).ok();
+	const int segments = cutIntoSegments(tasks);
+	const int parts = segmentBegin_[segments];
+	// Each part is computed into its own cells of the store, the same on any thread.
+	auto one = [&](int seg, int worker) {
+		for (int p = segmentBegin_[seg]; p < segmentBegin_[seg + 1]; p++) {
+			const RectTask &part = parts_[p];
+			const LevelRect piece{ part.rows, needRects_[part.level][part.index].cols };
+			partFailed_[p] = !computeRect(input, part.level, piece, *scratch_[size_t(worker)]).ok();
+		}
 	};
-	forEachTask(pool_, tasks, one);
-	for (int t = 0; t < tasks; t++)
-		if (taskFailed_[t])
+	forEachTask(pool_, segments, one);
+	for (int p = 0; p < parts; p++)
+		if (partFailed_[p])
 			return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 	// Remember them, in the order of the levels (the oldest is forgotten when the list
-	// is full: computed again if asked for again). The pieces are done with their
-	// rectangle: its first piece names it.
-	std::sort(tasks_, tasks_ + tasks, [](const RectTask &a, const RectTask &b) {
+	// is full: computed again if asked for again). The parts are done with their
+	// rectangle: its first part names it.
+	// (std::sort: stable_sort may allocate.)
+	std::sort(parts_, parts_ + parts, [](const RectTask &a, const RectTask &b) {
 		if (a.level != b.level)
 			return a.level < b.level;
 		return a.index != b.index ? a.index < b.index : a.rows.begin < b.rows.begin;
 	});
-	for (int t = 0; t < tasks; t++) {
-		const int i = tasks_[t].level;
-		const LevelRect &r = needRects_[i][tasks_[t].index];
-		if (tasks_[t].rows.begin != r.rows.begin)
+	for (int p = 0; p < parts; p++) {
+		const int i = parts_[p].level;
+		const LevelRect &r = needRects_[i][parts_[p].index];
+		if (parts_[p].rows.begin != r.rows.begin)
 			continue;
 		if (doneCount_[i] == 0 && rows_[i].chan.empty())
 			computedCount++;
@@ -109,35 +104,58 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 	return Status::success();
 }
 
-int Pyramid::splitRectTasks(int tasks)
+int Pyramid::cutIntoSegments(int tasks)
 {
 	const int threads = workers();
-	if (threads == 1 || tasks == 0)
+	segmentBegin_[0] = 0;
+	if (threads == 1) {
+		for (int t = 0; t < tasks; t++) {
+			parts_[t] = tasks_[t];
+			segmentBegin_[t + 1] = t + 1;
+		}
 		return tasks;
+	}
 	long total = 0;
 	for (int t = 0; t < tasks; t++)
 		total += tasks_[t].cells;
-	const long share = (total + 2 * threads - 1) / (2 * threads);
-	// A piece of fewer rows would compute more margin than cells.
+	const int wanted = std::min(2 * threads, kMaxSegments);
+	const long unit = (total + wanted - 1) / wanted;
+	// A part of fewer rows would compute more margin than cells.
 	const int minRows = std::max(4, 8 * channelMargin_ / params_.shrink);
-	const int originals = tasks;
-	for (int t = 0; t < originals; t++) {
-		RectTask &task = tasks_[t];
-		const int rows = task.rows.size();
-		const long perRow = task.cells / std::max(1, rows);
-		int pieces = int(std::min<long>((task.cells + share - 1) / share, rows / minRows));
-		pieces = std::min(pieces, 1 + kMaxRectPieces - (tasks - originals));
-		if (pieces < 2)
-			continue;
-		const CellRange all = task.rows;
-		for (int p = 0; p < pieces; p++) {
-			const CellRange piece{ all.begin + int(long(rows) * p / pieces),
-					       all.begin + int(long(rows) * (p + 1) / pieces) };
-			RectTask &to = p == 0 ? task : tasks_[tasks++];
-			to = RectTask{ task.level, task.index, piece, perRow * piece.size() };
+	int parts = 0, segments = 0;
+	long filled = 0; // cells in the open segment
+	auto close = [&] {
+		segmentBegin_[++segments] = parts;
+		filled = 0;
+	};
+	for (int t = 0; t < tasks; t++) {
+		const RectTask &task = tasks_[t];
+		const long cols = std::max(1L, task.cells / std::max(1, task.rows.size()));
+		int row = task.rows.begin;
+		while (row < task.rows.end) {
+			const int left = task.rows.end - row;
+			int take = left;
+			// The last segment takes whatever is left.
+			if (segments < kMaxSegments - 1 && long(left) * cols > unit - filled) {
+				take = int((unit - filled + cols / 2) / cols);
+				if (take < minRows)
+					take = filled > 0 ? 0 : minRows; // close this one, or one small part
+				if (left - take < minRows)
+					take = left; // no sliver behind
+			}
+			if (take > 0) {
+				parts_[parts++] = RectTask{ task.level, task.index, CellRange{ row, row + take },
+							    cols * take };
+				filled += cols * take;
+				row += take;
+			}
+			if (take == 0 || filled >= unit || (row < task.rows.end && segments < kMaxSegments - 1))
+				close();
 		}
 	}
-	return tasks;
+	if (filled > 0)
+		close();
+	return segments;
 }
 
 CellRange Pyramid::colourRows(int i, const LevelRect &r)
