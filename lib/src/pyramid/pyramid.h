@@ -195,9 +195,14 @@ private:
 	// The whole image's colour rows that computeRect(i, r) reads.
 	CellRange colourRows(int i, const LevelRect &r);
 	// The colour rows `chan` of computed level i's image, in columns `chanCols`: the
-	// whole image's (converted if need be), or resampled from them into s.levelLuv.
+	// whole image's (converted if need be), the half-size image's (resampled already by
+	// computeBands), or resampled into s.levelLuv from the whole image or, for the
+	// octaves below the half-size image, from it.
 	Status levelColour(FrameInput &input, int i, const CellRange &chan, const CellRange &chanCols,
 			   Plane<uint16_t> in[3], Scratch &s);
+	// The half-size image's rows that its level and the octaves below it read, resampled
+	// from the whole image `luv` (split over the pool).
+	Status resampleHalf(const Plane<uint16_t> luv[3]);
 	// The whole image's LUV rows not converted yet this frame (split over the pool).
 	void convertLuvRows(FrameInput &input, CellRange rows);
 	void approximate(int i, const CellRange &rows, const CellRange &cols,
@@ -237,6 +242,9 @@ private:
 	// the threads finish together: one rectangle can be most of a frame's work. With one,
 	// each rectangle is its own segment. Returns the number of segments.
 	int cutIntoSegments(int tasks);
+	// tasks_[0 .. tasks) cut into segments and computed over the pool (computeRect);
+	// `parts`: how many parts of parts_ they became.
+	Status computeTasks(FrameInput &input, int tasks, int &parts);
 	CellRange fullRows_; // rows of the whole-image LUV planes the levels read
 	int halfLevel_ = -1; // the computed level at scale 1/2, source of smaller octaves
 	int frameDemands_ = 0; // compute() calls since beginFrame()

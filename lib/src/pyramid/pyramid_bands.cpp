@@ -91,67 +91,78 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width, height);
+	const Scratch &s = *scratch_[0];
 	// Only the rows some level reads.
 	const CellRange luvRows = fullRows_;
 	fullRows_ = CellRange();
 	convertLuvRows(input, luvRows);
 
-	// Computed levels, from the largest: each is resampled from the whole image, or
-	// from the half-size image once that exists (as the toolbox does).
-	Scratch &s = *scratch_[0];
-	Plane<uint16_t> source[3] = { luv[0], luv[1], luv[2] };
+	// Computed levels: each keeps its place in the store, so offsets do not depend on
+	// which rows a frame needs. Their rows are then computed as parts over the threads
+	// (computeTasks), each resampled from the whole image, or from the half-size image
+	// below it (as the toolbox does), which is therefore made first.
 	size_t offset = 0;
+	int tasks = 0;
 	computedCount = 0;
 	for (int i = 0; i < scales_.count; i++) {
 		const PyramidLevel &l = scales_.levels[i];
 		const LevelRows &r = rows_[i];
+		needCount_[i] = 0;
 		if (!l.computed)
 			continue;
-		// Every computed level keeps its place in the store, so offsets do not depend
-		// on which rows a frame needs.
 		const size_t need = size_t(kChannelCount) * l.width * l.height;
 		if (offset + need > computedStore_.capacity())
 			return Status::error(ErrorCode::ImageTooLarge, "channels of level %d do not fit", i);
 		realOffset_[i] = offset;
 		offset += need;
-		if (r.luv.empty())
-			continue;
-		const bool isHalf = i == halfLevel_;
 		const int w1 = l.width * params_.shrink, h1 = l.height * params_.shrink;
-		Plane<uint16_t> in[3];
-		if (w1 == width && h1 == height) {
-			for (int c = 0; c < 3; c++)
-				in[c] = luv[c];
-		} else {
-			if (!s.levelLuv[0].fits(w1, h1) || (isHalf && !halfLuv_[0].fits(w1, h1)))
-				return Status::error(ErrorCode::ImageTooLarge, "level %d does not fit", i);
-			const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX, s);
-			const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY, s) : nullptr;
-			if (!yTaps)
-				return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-			const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
-			for (int c = 0; c < 3; c++)
-				in[c] = isHalf ? halfLuv_[c].view(w1, h1) : s.levelLuv[c].view(w1, h1);
-			resampleRows(source, in, 3, yTapsOf, r.luv, xTaps, s);
-			if (isHalf)
-				for (int c = 0; c < 3; c++)
-					source[c] = in[c];
-		}
-		if (r.chan.empty())
+		if (!s.levelLuv[0].fits(w1, h1) || (i == halfLevel_ && !halfLuv_[0].fits(w1, h1)))
+			return Status::error(ErrorCode::ImageTooLarge, "level %d does not fit", i);
+		if (r.luv.empty() || r.chan.empty())
 			continue;
-		Plane<const uint16_t> band[3];
-		for (int c = 0; c < 3; c++)
-			band[c] = { in[c].row(r.chan.begin), w1, r.chan.size(), in[c].stride };
-		Plane<uint16_t> out[kChannelCount];
-		planesAt(computedStore_.data() + offset - need, l.width, l.height, out);
-		for (int c = 0; c < kChannelCount; c++)
-			out[c].data = out[c].row(r.chan.begin / params_.shrink);
-		s.channels.compute(band, w1, r.chan.size(), out);
+		needRects_[i][0] = LevelRect{ r.raw, CellRange{ 0, l.width } };
+		needCount_[i] = 1;
+		tasks_[tasks++] = RectTask{ i, 0, r.raw, long(r.raw.size()) * l.width };
 		computedCount++;
 	}
+	if (halfLevel_ >= 0 && !rows_[halfLevel_].luv.empty()) {
+		const Status st = resampleHalf(luv);
+		if (!st.ok())
+			return st;
+	}
+	int parts = 0;
+	st = computeTasks(input, tasks, parts);
+	if (!st.ok())
+		return st;
 	msChannels = msSince(t0);
 	for (auto &each : scratch_)
 		each->msApprox = each->msSmooth = each->msFilter = 0;
+	return Status::success();
+}
+
+Status Pyramid::resampleHalf(const Plane<uint16_t> luv[3])
+{
+	const int h = halfLevel_;
+	const PyramidLevel &l = scales_.levels[h];
+	const int w1 = l.width * params_.shrink, h1 = l.height * params_.shrink;
+	const kernels::ResampleTap *xTaps = levelTaps(h, kTapsX, *scratch_[0]);
+	const kernels::ResampleTap *yTaps = xTaps ? levelTaps(h, kTapsY, *scratch_[0]) : nullptr;
+	if (!yTaps)
+		return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+	const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
+	Plane<uint16_t> half[3];
+	for (int c = 0; c < 3; c++)
+		half[c] = halfLuv_[c].view(w1, h1);
+	// Each output row depends only on its own taps: chunks of rows, each its own.
+	const CellRange rows = rows_[h].luv;
+	const int chunks = std::min(rows.size(), workers() == 1 ? 1 : 4 * workers());
+	auto one = [&](int t, int worker) {
+		const CellRange part{ rows.begin + int(long(rows.size()) * t / chunks),
+				      rows.begin + int(long(rows.size()) * (t + 1) / chunks) };
+		if (!part.empty())
+			resampleRows(luv, half, 3, yTapsOf, part, xTaps, *scratch_[size_t(worker)]);
+	};
+	forEachTask(pool_, chunks, one);
 	return Status::success();
 }
 

@@ -62,24 +62,13 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 			tasks_[tasks++] = RectTask{ i, k, r.rows, long(r.rows.size()) * r.cols.size() };
 		}
 	convertLuvRows(input, colour);
-	const int segments = cutIntoSegments(tasks);
-	const int parts = segmentBegin_[segments];
-	// Each part is computed into its own cells of the store, the same on any thread.
-	auto one = [&](int seg, int worker) {
-		for (int p = segmentBegin_[seg]; p < segmentBegin_[seg + 1]; p++) {
-			const RectTask &part = parts_[p];
-			const LevelRect piece{ part.rows, needRects_[part.level][part.index].cols };
-			partFailed_[p] = !computeRect(input, part.level, piece, *scratch_[size_t(worker)]).ok();
-		}
-	};
-	forEachTask(pool_, segments, one);
-	for (int p = 0; p < parts; p++)
-		if (partFailed_[p])
-			return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
+	int parts = 0;
+	const Status st = computeTasks(input, tasks, parts);
+	if (!st.ok())
+		return st;
 	// Remember them, in the order of the levels (the oldest is forgotten when the list
 	// is full: computed again if asked for again). The parts are done with their
-	// rectangle: its first part names it.
-	// (std::sort: stable_sort may allocate.)
+	// rectangle: its first part names it. (std::sort: stable_sort may allocate.)
 	std::sort(parts_, parts_ + parts, [](const RectTask &a, const RectTask &b) {
 		if (a.level != b.level)
 			return a.level < b.level;
@@ -101,6 +90,25 @@ Status Pyramid::computeRects(FrameInput &input, const int *levels, const LevelRe
 		rectsComputed++;
 	}
 	msChannels += msSince(t0);
+	return Status::success();
+}
+
+Status Pyramid::computeTasks(FrameInput &input, int tasks, int &parts)
+{
+	const int segments = cutIntoSegments(tasks);
+	parts = segmentBegin_[segments];
+	// Each part is computed into its own cells of the store, the same on any thread.
+	auto one = [&](int seg, int worker) {
+		for (int p = segmentBegin_[seg]; p < segmentBegin_[seg + 1]; p++) {
+			const RectTask &part = parts_[p];
+			const LevelRect piece{ part.rows, needRects_[part.level][part.index].cols };
+			partFailed_[p] = !computeRect(input, part.level, piece, *scratch_[size_t(worker)]).ok();
+		}
+	};
+	forEachTask(pool_, segments, one);
+	for (int p = 0; p < parts; p++)
+		if (partFailed_[p])
+			return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 	return Status::success();
 }
 
@@ -216,13 +224,27 @@ Status Pyramid::levelColour(FrameInput &input, int i, const CellRange &chan, con
 			in[c] = luv[c];
 		return Status::success();
 	}
+	// The half-size image, resampled already (computeBands), and the smaller octaves,
+	// which are resampled from it.
+	const bool fromHalf = halfLevel_ >= 0 && i >= halfLevel_;
+	if (fromHalf) {
+		const PyramidLevel &half = scales_.levels[halfLevel_];
+		for (int c = 0; c < 3; c++)
+			luv[c] = halfLuv_[c].view(half.width * params_.shrink, half.height * params_.shrink);
+		if (i == halfLevel_) {
+			for (int c = 0; c < 3; c++)
+				in[c] = luv[c];
+			return Status::success();
+		}
+	}
 	const kernels::ResampleTap *xTaps = levelTaps(i, kTapsX, s);
 	const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY, s) : nullptr;
 	if (!yTaps)
 		return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
 	// The level's colour image is the thread's: resample these rows again from the
-	// whole image.
-	convertLuvRows(input, sourceRows(yTaps, chan));
+	// whole (or half-size) image.
+	if (!fromHalf)
+		convertLuvRows(input, sourceRows(yTaps, chan));
 	for (int c = 0; c < 3; c++)
 		in[c] = s.levelLuv[c].view(w1, h1);
 	const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
