@@ -15,37 +15,17 @@ namespace {
 
 const char *const kName = "AcfCaltech+Detector";
 
-bool loadCaltech(Model &model)
-{
-	const std::string path = test::toolboxModelBlob(kName);
-	std::vector<uint8_t> blob;
-	if (path.empty() || !test::readFile(path, blob))
-		return false;
-	return loadModel(blob.data(), blob.size(), model).ok();
-}
-
 } // namespace
 
 TEST(CaltechParity, Frame1Levels1And2WithinTolerance)
 {
-	const std::string shared = test::sharedDir();
-	const std::string frame = test::petsFrame(1);
-	Model model;
-	if (shared.empty() || frame.empty() || !loadCaltech(model))
+	test::ToolboxFrame1 f;
+	const test::Frame1 got = test::toolboxPyramidFrame1(kName, f);
+	if (got == test::Frame1::Absent)
 		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
-	test::RgbImage img;
-	ASSERT_TRUE(test::loadRgb(frame, img));
-	const std::string dir = shared + "/reference/dollar-toolbox-pets/" + kName;
-	const std::vector<float> ref = test::readFloats(dir + "/pyr_frame1_levels1-2.bin");
-	ASSERT_FALSE(ref.empty());
-
-	// The reference was computed on an AMD EPYC: its rcpps, not Intel's (docs/parity.md).
-	model.params.toolboxCpu = ToolboxCpu::AmdEpyc;
-	Pyramid pyr;
-	Status st = pyr.init(model.params, img.width, img.height);
-	ASSERT_TRUE(st.ok()) << st.message();
-	st = pyr.compute(img.pixels.data(), 3 * img.width, img.width, img.height);
-	ASSERT_TRUE(st.ok()) << st.message();
+	ASSERT_EQ(got, test::Frame1::Ready);
+	Pyramid &pyr = f.pyramid;
+	const std::vector<float> &ref = f.reference;
 	// pyr_frame1_levels1-2.txt: level 1 is 296 x 390 (computed), level 2 272 x 358.
 	const LevelChannels l1 = pyr.prepare(0);
 	ASSERT_EQ(l1.paddedHeight, 296);

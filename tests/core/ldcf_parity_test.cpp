@@ -100,33 +100,20 @@ TEST(LdcfParity, FilterIsMatlabConv2SameOnAnImpulse)
 
 TEST(LdcfParity, Frame1Levels1And2WithinTolerance)
 {
-	const std::string shared = test::sharedDir();
-	const std::string frame = test::petsFrame(1);
-	const std::string path = test::toolboxModelBlob(kName);
-	std::vector<uint8_t> blob;
-	Model model;
-	if (shared.empty() || frame.empty() || path.empty() || !test::readFile(path, blob) ||
-	    !loadModel(blob.data(), blob.size(), model).ok())
+	test::ToolboxFrame1 f;
+	const test::Frame1 got = test::toolboxPyramidFrame1(kName, f);
+	if (got == test::Frame1::Absent)
 		GTEST_SKIP() << "needs ../shared, calped-convert and data/pets/frames (scripts/fetch-pets.sh)";
-	test::RgbImage img;
-	ASSERT_TRUE(test::loadRgb(frame, img));
-	const std::string dir = shared + "/reference/dollar-toolbox-pets/" + kName;
-	const std::vector<float> ref = test::readFloats(dir + "/pyr_frame1_levels1-2.bin");
-	ASSERT_FALSE(ref.empty());
-
-	// The reference was computed on an AMD EPYC: its rcpps, not Intel's (docs/parity.md).
-	model.params.toolboxCpu = ToolboxCpu::AmdEpyc;
-	Pyramid pyr;
-	Status st = pyr.init(model.params, img.width, img.height);
-	ASSERT_TRUE(st.ok()) << st.message();
-	st = pyr.compute(img.pixels.data(), 3 * img.width, img.width, img.height);
-	ASSERT_TRUE(st.ok()) << st.message();
+	ASSERT_EQ(got, test::Frame1::Ready);
+	Pyramid &pyr = f.pyramid;
+	const Model &model = f.model;
+	const std::vector<float> &ref = f.reference;
 	const LevelChannels first = pyr.prepare(0);
 	// Shrink 2 with 7 x 6 cells of padding: 302 x 396 before the filters.
 	ASSERT_EQ(first.paddedHeight, 302);
 	ASSERT_EQ(first.paddedWidth, 396);
 	LdcfFilter filter;
-	st = filter.init(model, first.paddedHeight, first.paddedWidth);
+	Status st = filter.init(model, first.paddedHeight, first.paddedWidth);
 	ASSERT_TRUE(st.ok()) << st.message();
 	double worstMean = 0, worstP99 = 0;
 	// pyr_frame1_levels1-2.txt: 151 x 198 x 40 and 139 x 182 x 40.

@@ -160,5 +160,35 @@ size_t expectLevelWithinTolerance(const LevelChannels &lc, int channels, const s
 	return n;
 }
 
+Frame1 toolboxPyramidFrame1(const char *name, ToolboxFrame1 &out)
+{
+	const std::string shared = sharedDir();
+	const std::string frame = petsFrame(1);
+	const std::string path = toolboxModelBlob(name);
+	std::vector<uint8_t> blob;
+	if (shared.empty() || frame.empty() || path.empty() || !readFile(path, blob) ||
+	    !loadModel(blob.data(), blob.size(), out.model).ok())
+		return Frame1::Absent;
+	RgbImage img;
+	if (!loadRgb(frame, img)) {
+		ADD_FAILURE() << "cannot decode " << frame;
+		return Frame1::Failed;
+	}
+	out.reference = readFloats(shared + "/reference/dollar-toolbox-pets/" + name + "/pyr_frame1_levels1-2.bin");
+	if (out.reference.empty()) {
+		ADD_FAILURE() << "no pyr_frame1_levels1-2.bin for " << name;
+		return Frame1::Failed;
+	}
+	out.model.params.toolboxCpu = ToolboxCpu::AmdEpyc;
+	Status st = out.pyramid.init(out.model.params, img.width, img.height);
+	if (st.ok())
+		st = out.pyramid.compute(img.pixels.data(), 3 * img.width, img.width, img.height);
+	if (!st.ok()) {
+		ADD_FAILURE() << name << ": " << st.message();
+		return Frame1::Failed;
+	}
+	return Frame1::Ready;
+}
+
 } // namespace test
 } // namespace calped

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <calped/detector.h>
+#include <calped/model.h>
 
 #include "pyramid/pyramid.h"
 
@@ -36,6 +37,19 @@ void expectDetectionParity(const std::string &modelBlob, const std::string &refP
 // its max. Returns the floats it read.
 size_t expectLevelWithinTolerance(const LevelChannels &lc, int channels, const std::vector<float> &ref,
 				  size_t offset, const char *what, double orientMean = 0.01);
+
+// PETS frame 1 through the pyramid of the toolbox's model `name` (its blob made by
+// calped-convert), as the AMD EPYC that made the references computed it (its rcpps:
+// docs/parity.md), beside that model's dump of levels 1-2 (pyr_frame1_levels1-2.bin).
+struct ToolboxFrame1 {
+	Model model;
+	Pyramid pyramid;
+	std::vector<float> reference;
+};
+enum class Frame1 { Ready, Absent, Failed };
+// Absent: ../shared, the blob or the PETS frames are missing (the caller skips); Failed:
+// reported with ADD_FAILURE.
+Frame1 toolboxPyramidFrame1(const char *name, ToolboxFrame1 &out);
 
 } // namespace test
 } // namespace calped
