@@ -31,6 +31,7 @@
 #include "frame_source.h"
 #include "ground_truth.h"
 #include "image_io.h"
+#include "program.h"
 
 using namespace calped;
 using namespace calped::eval_tool;
@@ -71,56 +72,75 @@ bool readAll(const std::string &path, std::vector<uint8_t> &out, const char *wha
 	return true;
 }
 
-int usage()
-{
-	std::fprintf(stderr, "usage: recall_causes --frames DIR --gt FILE --model BLOB --calib FILE "
-			     "[--resize R] [--min-height H] [--max-height H] [--persistence N]\n"
-			     "       [--score-ratio] [--no-box-voting] [--max-frames N] [--list]\n");
-	return 2;
-}
+const apps::ProgramInfo kProgram = {
+	"recall_causes",
+	"usage: recall_causes --frames DIR --gt FILE --model BLOB --calib FILE [options]\n"
+	"\n"
+	"Why the calibrated method misses people the generic mode finds, person by person\n"
+	"(docs/calibrated.md).\n"
+	"\n"
+	"options:\n",
+	"",
+};
 
 } // namespace
 
 int main(int argc, char **argv)
 {
-	std::string framesDir, gtPath, modelPath, calibPath;
+	const std::vector<apps::OptionSpec> table = {
+		{ "frames", "DIR", "the PNG frames, in name order" },
+		{ "gt", "FILE", "ground truth (PETS CVML or MOT)" },
+		{ "model", "BLOB", "calped model blob (.cpm)" },
+		{ "calib", "FILE", "camera calibration" },
+		{ "resize", "R", "upscale by R, 0 < R <= 8 (default 2)" },
+		{ "min-height", "H", "plausible person heights from H metres (default the detector's)" },
+		{ "max-height", "H", "... up to H metres (default the detector's)" },
+		{ "persistence", "N", "frames a dense region lives (default the detector's)" },
+		{ "score-ratio", nullptr, "the score-ratio step on" },
+		{ "no-box-voting", nullptr, "box voting off" },
+		{ "max-frames", "N", "only the first N frames" },
+		{ "list", nullptr, "print every missed person" },
+	};
+	apps::ParsedArgs args;
+	const int rc = apps::parseCommandLine(kProgram, table, false, argc, argv, args);
+	if (rc >= 0)
+		return rc;
+	std::string framesDir, gtPath, modelPath, calibPath, error;
 	double resize = 2.0, minHeight = CalibratedSettings().minPersonHeight,
 	       maxHeight = CalibratedSettings().maxPersonHeight;
-	long maxFrames = 0;
+	long maxFrames = 0, persistence = 0;
 	bool list = false;
 	CalibratedSettings plan;
-	for (int i = 1; i < argc; ++i) {
-		const std::string a = argv[i];
-		const bool hasValue = i + 1 < argc;
-		if (a == "--list")
+	for (const apps::ParsedOption &o : args.options) {
+		if (o.name == "list")
 			list = true;
-		else if (a == "--frames" && hasValue)
-			framesDir = argv[++i];
-		else if (a == "--gt" && hasValue)
-			gtPath = argv[++i];
-		else if (a == "--model" && hasValue)
-			modelPath = argv[++i];
-		else if (a == "--calib" && hasValue)
-			calibPath = argv[++i];
-		else if (a == "--resize" && hasValue)
-			resize = std::atof(argv[++i]);
-		else if (a == "--min-height" && hasValue)
-			minHeight = std::atof(argv[++i]);
-		else if (a == "--max-height" && hasValue)
-			maxHeight = std::atof(argv[++i]);
-		else if (a == "--persistence" && hasValue)
-			plan.denseRegionPersistence = std::atoi(argv[++i]);
-		else if (a == "--score-ratio")
+		else if (o.name == "frames")
+			apps::nonEmpty(o, "a folder", framesDir, error);
+		else if (o.name == "gt")
+			apps::nonEmpty(o, "a file name", gtPath, error);
+		else if (o.name == "model")
+			apps::nonEmpty(o, "a file name", modelPath, error);
+		else if (o.name == "calib")
+			apps::nonEmpty(o, "a file name", calibPath, error);
+		else if (o.name == "resize")
+			apps::numberIn(o, 0, true, 8, resize, error);
+		else if (o.name == "min-height")
+			apps::numberIn(o, 0, true, 10, minHeight, error);
+		else if (o.name == "max-height")
+			apps::numberIn(o, 0, true, 10, maxHeight, error);
+		else if (o.name == "persistence" && apps::wholeIn(o, 0, 1000000, persistence, error))
+			plan.denseRegionPersistence = int(persistence);
+		else if (o.name == "score-ratio")
 			plan.scoreRatio = true;
-		else if (a == "--no-box-voting")
+		else if (o.name == "no-box-voting")
 			plan.boxVoting = false;
-		else if (a == "--max-frames" && hasValue)
-			maxFrames = std::atol(argv[++i]);
-		else
-			return usage();
+		else if (o.name == "max-frames")
+			apps::wholeIn(o, 1, 1000000000, maxFrames, error);
+		if (!error.empty())
+			return apps::usageError(kProgram, error);
 	}
 	if (framesDir.empty() || gtPath.empty() || modelPath.empty() || calibPath.empty())
-		return usage();
+		return apps::usageError(kProgram, "needs --frames, --gt, --model and --calib (try --help)");
 
 	std::vector<uint8_t> bytes;
 	Model model;
@@ -141,7 +161,6 @@ int main(int argc, char **argv)
 	}
 	GroundTruth truth;
 	FrameInput input;
-	std::string error;
 	if (!loadGroundTruth(gtPath, truth, error) ||
 	    !resolveFolderInput(framesDir, maxFrames, input, error)) {
 		std::fprintf(stderr, "recall_causes: %s\n", error.c_str());

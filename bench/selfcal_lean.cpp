@@ -27,6 +27,7 @@
 #include "frame_source.h"
 #include "ground_truth.h"
 #include "image_io.h"
+#include "program.h"
 
 using namespace calped;
 using namespace calped::eval_tool;
@@ -42,12 +43,15 @@ struct Person {
 	long frame;
 };
 
-int usage()
-{
-	std::fprintf(stderr, "usage: selfcal_lean --frames DIR --gt FILE --calib FILE [--max-frames N] "
-			     "[--min-height H] [--threshold T] [--list]\n");
-	return 2;
-}
+const apps::ProgramInfo kProgram = {
+	"selfcal_lean",
+	"usage: selfcal_lean --frames DIR --gt FILE --calib FILE [options]\n"
+	"\n"
+	"Whether people's lean in the image fixes the focal length (docs/calibration.md).\n"
+	"\n"
+	"options:\n",
+	"",
+};
 
 std::vector<uint8_t> grey(const ports::RgbImage &image)
 {
@@ -161,35 +165,45 @@ double fitVanishingPoint(const std::vector<Person> &people, double Person::*lean
 
 int main(int argc, char **argv)
 {
-	std::string framesDir, gtPath, calibPath;
+	const std::vector<apps::OptionSpec> table = {
+		{ "frames", "DIR", "the PNG frames, in name order" },
+		{ "gt", "FILE", "ground truth (PETS CVML)" },
+		{ "calib", "FILE", "the camera the leans are compared with" },
+		{ "max-frames", "N", "only the first N frames" },
+		{ "min-height", "H", "boxes at least H pixels tall (default 40)" },
+		{ "threshold", "T", "foreground: |difference from the background| > T grey levels (default 25)" },
+		{ "list", nullptr, "print every box's leans" },
+	};
+	apps::ParsedArgs args;
+	const int rc = apps::parseCommandLine(kProgram, table, false, argc, argv, args);
+	if (rc >= 0)
+		return rc;
+	std::string framesDir, gtPath, calibPath, error;
 	long maxFrames = 0;
 	double minHeight = 40, threshold = 25;
 	bool list = false;
-	for (int i = 1; i < argc; ++i) {
-		const std::string a = argv[i];
-		const bool hasValue = i + 1 < argc;
-		if (a == "--list")
+	for (const apps::ParsedOption &o : args.options) {
+		if (o.name == "list")
 			list = true;
-		else if (a == "--frames" && hasValue)
-			framesDir = argv[++i];
-		else if (a == "--gt" && hasValue)
-			gtPath = argv[++i];
-		else if (a == "--calib" && hasValue)
-			calibPath = argv[++i];
-		else if (a == "--max-frames" && hasValue)
-			maxFrames = std::atol(argv[++i]);
-		else if (a == "--min-height" && hasValue)
-			minHeight = std::atof(argv[++i]);
-		else if (a == "--threshold" && hasValue)
-			threshold = std::atof(argv[++i]);
-		else
-			return usage();
+		else if (o.name == "frames")
+			apps::nonEmpty(o, "a folder", framesDir, error);
+		else if (o.name == "gt")
+			apps::nonEmpty(o, "a file name", gtPath, error);
+		else if (o.name == "calib")
+			apps::nonEmpty(o, "a file name", calibPath, error);
+		else if (o.name == "max-frames")
+			apps::wholeIn(o, 1, 1000000000, maxFrames, error);
+		else if (o.name == "min-height")
+			apps::numberIn(o, 0, true, 100000, minHeight, error);
+		else if (o.name == "threshold")
+			apps::numberIn(o, 0, true, 255, threshold, error);
+		if (!error.empty())
+			return apps::usageError(kProgram, error);
 	}
 	if (framesDir.empty() || gtPath.empty() || calibPath.empty())
-		return usage();
+		return apps::usageError(kProgram, "needs --frames, --gt and --calib (try --help)");
 
 	std::vector<uint8_t> bytes;
-	std::string error;
 	CameraModel camera;
 	if (!ports::readFileBytes(calibPath, bytes, error, "calibration ", ports::kMaxModelFileBytes)) {
 		std::fprintf(stderr, "selfcal_lean: %s\n", error.c_str());
