@@ -71,5 +71,14 @@ std::vector<uint8_t> randomImage(uint32_t seed, int width, int height)
 	return img;
 }
 
+bool syntheticCamera(CameraModel &out)
+{
+	Eigen::Matrix3d K;
+	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
+	Eigen::Matrix3d R;
+	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+	return CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, out).ok();
+}
+
 } // namespace test
 } // namespace calped

@@ -167,12 +167,8 @@ TEST(BoundedMemory, StaticRejectionAllocatesNothingAndDropsAStaticScene)
 
 TEST(BoundedMemory, CalibratedDetectAllocatesNothing)
 {
-	Eigen::Matrix3d K;
-	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(test::syntheticCamera(camera));
 	DetectorConfig cfg;
 	cfg.maxWidth = 320;
 	cfg.maxHeight = 240;
@@ -218,12 +214,8 @@ TEST(BoundedMemory, FourThreadsAllocateNothing)
 {
 	// The pool's hand-off, the per-thread scratch and the candidate lanes: made by
 	// create(), nothing per frame, with either method and a converted pixel format.
-	Eigen::Matrix3d K;
-	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(test::syntheticCamera(camera));
 	const Model model = test::randomModel(7, 512);
 	for (int variant = 0; variant < 3; variant++) {
 		DetectorConfig cfg;
@@ -365,12 +357,8 @@ TEST(BoundedMemory, ShrinkTwoModelAllocatesNothing)
 	p.padW = 6;
 	ASSERT_TRUE(validateModel(model).ok()) << validateModel(model).message();
 	ASSERT_EQ(model.featureCount(), 5120);
-	Eigen::Matrix3d K;
-	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(test::syntheticCamera(camera));
 	std::vector<std::vector<uint8_t>> frames;
 	for (uint32_t s = 0; s < 3; s++)
 		frames.push_back(test::randomImage(s, 320, 240));
@@ -410,12 +398,8 @@ TEST(BoundedMemory, LdcfModelAllocatesNothing)
 	const Model model = test::randomLdcfModel(12, 256);
 	ASSERT_TRUE(validateModel(model).ok()) << validateModel(model).message();
 	ASSERT_EQ(model.featureCount(), 40 * 32 * 16);
-	Eigen::Matrix3d K;
-	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(test::syntheticCamera(camera));
 	std::vector<std::vector<uint8_t>> frames;
 	for (uint32_t s = 0; s < 3; s++)
 		frames.push_back(test::randomImage(s, 320, 240));

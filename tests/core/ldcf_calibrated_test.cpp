@@ -48,12 +48,8 @@ std::map<BoxKey, float> fullLevelScores(Pyramid &pyr, const Classifier &classifi
 TEST(LdcfCalibrated, WindowScoresEqualTheFullLevels)
 {
 	const Model model = test::randomLdcfModel(5, 128);
-	Eigen::Matrix3d K;
-	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(test::syntheticCamera(camera));
 	const int w = 320, h = 240;
 	DetectorConfig cfg;
 	cfg.maxWidth = w;

@@ -130,12 +130,8 @@ TEST(Threads, EverySectionOnce)
 		EXPECT_TRUE(runFrames(model, c, 3, frames) == one) << what;
 	};
 	same(cfg, small, "generic");
-	Eigen::Matrix3d K;
-	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(test::syntheticCamera(camera));
 	cfg.camera = &camera;
 	cfg.method = DetectionMethod::Calibrated;
 	cfg.staticRejection = StaticRejection();
@@ -182,12 +178,8 @@ TEST(Threads, SyntheticGenericSameForAnyThreadCount)
 
 TEST(Threads, SyntheticCalibratedSameForAnyThreadCount)
 {
-	Eigen::Matrix3d K;
-	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(test::syntheticCamera(camera));
 	const Model model = test::randomModel(7, 512);
 	DetectorConfig cfg;
 	cfg.maxWidth = 320;
@@ -255,12 +247,8 @@ TEST(Threads, SyntheticLdcfSameForAnyThreadCount)
 	cfg.maxHeight = 240;
 	cfg.cascadeThreshold = -10.0f;
 	expectSameForAnyThreads(model, cfg, syntheticFrames(320, 240, PixelFormat::RGB8, 1), "LDCF generic");
-	Eigen::Matrix3d K;
-	K << 300, 0, 160, 0, 300, 60, 0, 0, 1;
-	Eigen::Matrix3d R;
-	R << 1, 0, 0, 0, 0, -1, 0, 1, 0;
 	CameraModel camera;
-	ASSERT_TRUE(CameraModel::fromPinhole(K, R, Eigen::Vector3d(0, 2.0, 0), LengthUnit::Metre, camera).ok());
+	ASSERT_TRUE(test::syntheticCamera(camera));
 	cfg.resize = 2.0;
 	cfg.camera = &camera;
 	cfg.method = DetectionMethod::Calibrated;
