@@ -29,6 +29,10 @@ while (($# > 0)); do
 	esac
 done
 
+# Hours at the lowest priority on a machine that may be busy: libFuzzer times an input by
+# the wall clock, so a process kept off the CPU for 10 s would report a false hang. An
+# input that runs 60 s is still one.
+export CALPED_FUZZ_TIMEOUT=${CALPED_FUZZ_TIMEOUT:-60}
 args=(--runs "$runs")
 [[ -n $max_time ]] && args+=(--max-time "$max_time")
 rc=0
@@ -69,7 +73,7 @@ for t in "${targets[@]}"; do
 	fi
 	corpus=$(find "$work/corpus" -type f | wc -l)
 	findings=$(find "$work/artifacts" -type f | wc -l)
-	row[$t]="| \`$t\` | ${execs:-?} | ${rate:-?} | ${loaded:-?} | $corpus | $findings | $when, $(nproc) cores (load average $load as it ended), \`--runs $runs${max_time:+ --max-time $max_time}\` |"
+	row[$t]="| \`$t\` | ${execs:-?} | ${rate:-?} | ${loaded:-?} | $corpus | $findings | $when, $(nproc) cores (load average $load as it ended), \`--runs $runs${max_time:+ --max-time $max_time}\`, timeout ${CALPED_FUZZ_TIMEOUT} s |"
 done
 
 tmp=$(mktemp)

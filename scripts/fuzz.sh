@@ -95,14 +95,16 @@ for t in "${targets[@]}"; do
 	echo "=== fuzz $t: ${limit[*]}"
 	start=$SECONDS
 	began=$EPOCHREALTIME
-	# -timeout: one input running 10 s is a hang; -rss_limit_mb: 2 GB is an out-of-memory.
+	# -timeout: one input running 10 s is a hang (CALPED_FUZZ_TIMEOUT: another bound; the
+	# long run's, at the lowest priority beside other work, is longer); -rss_limit_mb: 2 GB
+	# is an out-of-memory.
 	# -max_len: inputs up to 1 MB, so that superlinear parsing shows (the default is 4 KB),
 	# unless the target's inputs are small by nature (max_len_for).
 	# The log is passed through as libFuzzer writes it; the moment its "INITED" line comes
 	# (the corpus loaded and run once) is noted, so that the rate after loading can be told
 	# from the whole run's, which short runs on large seeds make meaningless.
 	set +e
-	"$exe" "${limit[@]}" "${dict[@]}" -timeout=10 -rss_limit_mb=2048 -max_len="$(max_len_for "$t")" \
+	"$exe" "${limit[@]}" "${dict[@]}" -timeout="${CALPED_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 -max_len="$(max_len_for "$t")" \
 		-print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" 2>&1 |
 		while IFS= read -r line || [[ -n $line ]]; do
 			printf '%s\n' "$line"
