@@ -170,9 +170,11 @@ private:
 	void planRows(const CellRange *levelRows, int width, int height);
 	// dst[p]'s `rows` from src[p], in all of their columns or only in `cols`, for planes
 	// of one size sharing xTaps; yTaps[p] holds at most kMaxTapSets distinct pointers.
+	// dst's row 0 is the level's row dstFirstRow (a buffer holding only some rows).
 	void resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *dst, int planes,
 			  const kernels::ResampleTap *const *yTaps, const CellRange &rows,
-			  const kernels::ResampleTap *xTaps, Scratch &s, const CellRange *cols = nullptr);
+			  const kernels::ResampleTap *xTaps, Scratch &s, const CellRange *cols = nullptr,
+			  int dstFirstRow = 0);
 	static constexpr int kMaxTapSets = 3; // the channel types' gains
 
 	// Resampling taps of level i: across (kTapsX) and down (kTapsY, the first channel
@@ -194,10 +196,11 @@ private:
 	Status computeRect(FrameInput &input, int i, const LevelRect &r, Scratch &s);
 	// The whole image's colour rows that computeRect(i, r) reads.
 	CellRange colourRows(int i, const LevelRect &r);
-	// The colour rows `chan` of computed level i's image, in columns `chanCols`: the
-	// whole image's (converted if need be), the half-size image's (resampled already by
-	// computeBands), or resampled into s.levelLuv from the whole image or, for the
-	// octaves below the half-size image, from it.
+	// The colour rows `chan` of computed level i's image, in columns `chanCols`, as planes
+	// whose row 0 is row chan.begin: the whole image's (converted if need be), the
+	// half-size image's (resampled already by computeBands), or resampled into the first
+	// rows of s.levelLuv from the whole image or, for the octaves below the half-size
+	// image, from it.
 	Status levelColour(FrameInput &input, int i, const CellRange &chan, const CellRange &chanCols,
 			   Plane<uint16_t> in[3], Scratch &s);
 	// The half-size image's rows that its level and the octaves below it read, resampled

@@ -198,7 +198,7 @@ Status Pyramid::computeRect(FrameInput &input, int i, const LevelRect &r, Scratc
 	planesAt(s.approx.data(), chanCols.size() / shrink, chan.size() / shrink, scratch);
 	Plane<const uint16_t> block[3];
 	for (int c = 0; c < 3; c++)
-		block[c] = { in[c].row(chan.begin) + chanCols.begin, chanCols.size(), chan.size(), in[c].stride };
+		block[c] = { in[c].row(0) + chanCols.begin, chanCols.size(), chan.size(), in[c].stride };
 	s.channels.compute(block, chanCols.size(), chan.size(), scratch);
 	Plane<uint16_t> out[kChannelCount];
 	realLevelPlanes(i, out);
@@ -218,10 +218,14 @@ Status Pyramid::levelColour(FrameInput &input, int i, const CellRange &chan, con
 	Plane<uint16_t> luv[3];
 	for (int c = 0; c < 3; c++)
 		luv[c] = luv_[c].view(width_, height_);
+	// An image that exists already: its rows from chan.begin on.
+	auto rowsOf = [&](const Plane<uint16_t> *image) {
+		for (int c = 0; c < 3; c++)
+			in[c] = Plane<uint16_t>{ image[c].row(chan.begin), w1, chan.size(), image[c].stride };
+	};
 	if (w1 == width_ && h1 == height_) {
 		convertLuvRows(input, chan);
-		for (int c = 0; c < 3; c++)
-			in[c] = luv[c];
+		rowsOf(luv);
 		return Status::success();
 	}
 	// The half-size image, resampled already (computeBands), and the smaller octaves,
@@ -232,8 +236,7 @@ Status Pyramid::levelColour(FrameInput &input, int i, const CellRange &chan, con
 		for (int c = 0; c < 3; c++)
 			luv[c] = halfLuv_[c].view(half.width * params_.shrink, half.height * params_.shrink);
 		if (i == halfLevel_) {
-			for (int c = 0; c < 3; c++)
-				in[c] = luv[c];
+			rowsOf(luv);
 			return Status::success();
 		}
 	}
@@ -241,14 +244,14 @@ Status Pyramid::levelColour(FrameInput &input, int i, const CellRange &chan, con
 	const kernels::ResampleTap *yTaps = xTaps ? levelTaps(i, kTapsY, s) : nullptr;
 	if (!yTaps)
 		return Status::error(ErrorCode::InvalidArgument, "resampling ratio too large");
-	// The level's colour image is the thread's: resample these rows again from the
-	// whole (or half-size) image.
+	// Resampled again from the whole (or half-size) image into the thread's scratch, from
+	// its first row: a thread touches only as much of it as its largest part needs.
 	if (!fromHalf)
 		convertLuvRows(input, sourceRows(yTaps, chan));
 	for (int c = 0; c < 3; c++)
-		in[c] = s.levelLuv[c].view(w1, h1);
+		in[c] = s.levelLuv[c].view(w1, chan.size());
 	const kernels::ResampleTap *yTapsOf[3] = { yTaps, yTaps, yTaps };
-	resampleRows(luv, in, 3, yTapsOf, chan, xTaps, s, &chanCols);
+	resampleRows(luv, in, 3, yTapsOf, chan, xTaps, s, &chanCols, chan.begin);
 	return Status::success();
 }
 

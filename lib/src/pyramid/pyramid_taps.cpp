@@ -90,7 +90,8 @@ const kernels::ResampleTap *Pyramid::levelTaps(int i, int kind, Scratch &s)
 
 void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *dst, int planes,
 			   const kernels::ResampleTap *const *yTaps, const CellRange &rows,
-			   const kernels::ResampleTap *xTaps, Scratch &s, const CellRange *cols)
+			   const kernels::ResampleTap *xTaps, Scratch &s, const CellRange *cols,
+			   int dstFirstRow)
 {
 	// The planes share their source rows (the channel types' gains scale the weights
 	// only), so one band of them serves every plane; each distinct yTaps is shifted once.
@@ -112,7 +113,7 @@ void Pyramid::resampleRows(const Plane<uint16_t> *src, const Plane<uint16_t> *ds
 			shiftTaps(yTaps[p], rows, srcRows.begin, band);
 			shiftedFrom[sets++] = yTaps[p];
 		}
-		jobs[p] = { src[p].row(srcRows.begin), src[p].stride, dst[p].row(rows.begin) + c.begin,
+		jobs[p] = { src[p].row(srcRows.begin), src[p].stride, dst[p].row(rows.begin - dstFirstRow) + c.begin,
 			    dst[p].stride, band };
 	}
 	Plane<uint16_t> tmp = s.resampleTmp.view(c.size(), srcRows.size());
