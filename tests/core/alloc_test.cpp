@@ -336,6 +336,50 @@ TEST(BoundedMemory, PetsInEveryPixelFormatAllocatesNothing)
 	}
 }
 
+namespace {
+
+// One detector of `model` on three 320x240 synthetic frames, generic or calibrated (the
+// synthetic camera, resize 2 in the pyramid, placed levels), on `threads`: no allocation
+// in detect(), windows classified and, calibrated, rectangles computed. Returns the
+// detections.
+int expectAllocationFree(const Model &model, bool calibrated, int threads, const char *what)
+{
+	CameraModel camera;
+	EXPECT_TRUE(test::syntheticCamera(camera));
+	std::vector<std::vector<uint8_t>> frames;
+	for (uint32_t s = 0; s < 3; s++)
+		frames.push_back(test::randomImage(s, 320, 240));
+	DetectorConfig cfg;
+	cfg.maxWidth = 320;
+	cfg.maxHeight = 240;
+	cfg.cascadeThreshold = -10.0f;
+	cfg.threads = threads;
+	if (calibrated) {
+		cfg.method = DetectionMethod::Calibrated;
+		cfg.camera = &camera;
+		cfg.resize = 2.0;
+		cfg.resizeAt = ResizeAt::Pyramid;
+		cfg.calibrated = CalibratedSettings();
+		cfg.calibrated->levels = PyramidLevels::Placed;
+	}
+	std::unique_ptr<Detector> det;
+	const Status st = Detector::create(model, cfg, det);
+	EXPECT_TRUE(st.ok()) << what << ": " << st.message();
+	if (!st.ok())
+		return 0;
+	int detections = 0;
+	EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0) << what;
+	std::printf("%s: %d detections, %llu windows in the last frame, 0 allocations\n", what, detections,
+		    (unsigned long long)det->lastStats().windows);
+	EXPECT_GT(det->lastStats().windows, 0u) << what;
+	if (calibrated) {
+		EXPECT_GT(DetectorInternals::of(*det).pyramid.rectsComputed, 0) << what;
+	}
+	return detections;
+}
+
+} // namespace
+
 // The Caltech+ model's options (shrink 2, softBin 1, no colour smoothing, 64x32 windows;
 // the same 5120 features as INRIA): 2x2 cells and spatially interpolated histograms, in
 // the generic method and the calibrated one with placed levels in rectangles.
@@ -357,37 +401,8 @@ TEST(BoundedMemory, ShrinkTwoModelAllocatesNothing)
 	p.padW = 6;
 	ASSERT_TRUE(validateModel(model).ok()) << validateModel(model).message();
 	ASSERT_EQ(model.featureCount(), 5120);
-	CameraModel camera;
-	ASSERT_TRUE(test::syntheticCamera(camera));
-	std::vector<std::vector<uint8_t>> frames;
-	for (uint32_t s = 0; s < 3; s++)
-		frames.push_back(test::randomImage(s, 320, 240));
-	for (bool calibrated : { false, true }) {
-		DetectorConfig cfg;
-		cfg.maxWidth = 320;
-		cfg.maxHeight = 240;
-		cfg.cascadeThreshold = -10.0f;
-		if (calibrated) {
-			cfg.method = DetectionMethod::Calibrated;
-			cfg.camera = &camera;
-			cfg.resize = 2.0;
-			cfg.resizeAt = ResizeAt::Pyramid;
-			cfg.calibrated = CalibratedSettings();
-			cfg.calibrated->levels = PyramidLevels::Placed;
-		}
-		std::unique_ptr<Detector> det;
-		const Status st = Detector::create(model, cfg, det);
-		ASSERT_TRUE(st.ok()) << st.message();
-		int detections = 0;
-		EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0);
-		std::printf("shrink 2, %s: %d detections, %llu windows in the last frame, 0 allocations\n",
-			    calibrated ? "calibrated, placed levels" : "generic", detections,
-			    (unsigned long long)det->lastStats().windows);
-		EXPECT_GT(det->lastStats().windows, 0u);
-		if (calibrated) {
-			EXPECT_GT(DetectorInternals::of(*det).pyramid.rectsComputed, 0);
-		}
-	}
+	expectAllocationFree(model, false, 1, "shrink 2, generic");
+	expectAllocationFree(model, true, 1, "shrink 2, calibrated, placed levels");
 }
 
 // LDCF (LdcfInriaDetector's options: shrink 2, four 5x5 filters per channel): the filter
@@ -398,37 +413,7 @@ TEST(BoundedMemory, LdcfModelAllocatesNothing)
 	const Model model = test::randomLdcfModel(12, 256);
 	ASSERT_TRUE(validateModel(model).ok()) << validateModel(model).message();
 	ASSERT_EQ(model.featureCount(), 40 * 32 * 16);
-	CameraModel camera;
-	ASSERT_TRUE(test::syntheticCamera(camera));
-	std::vector<std::vector<uint8_t>> frames;
-	for (uint32_t s = 0; s < 3; s++)
-		frames.push_back(test::randomImage(s, 320, 240));
-	for (int variant = 0; variant < 3; variant++) {
-		DetectorConfig cfg;
-		cfg.maxWidth = 320;
-		cfg.maxHeight = 240;
-		cfg.cascadeThreshold = -10.0f;
-		cfg.threads = variant == 2 ? 2 : 1;
-		if (variant >= 1) {
-			cfg.method = DetectionMethod::Calibrated;
-			cfg.camera = &camera;
-			cfg.resize = 2.0;
-			cfg.resizeAt = ResizeAt::Pyramid;
-			cfg.calibrated = CalibratedSettings();
-			cfg.calibrated->levels = PyramidLevels::Placed;
-		}
-		std::unique_ptr<Detector> det;
-		const Status st = Detector::create(model, cfg, det);
-		ASSERT_TRUE(st.ok()) << st.message();
-		int detections = 0;
-		EXPECT_EQ(allocationsDuring(*det, frames, 320, 240, &detections), 0) << "variant " << variant;
-		std::printf("LDCF, %s: %d detections, %llu windows in the last frame, 0 allocations\n",
-			    variant == 0 ? "generic" : variant == 1 ? "calibrated, placed levels" : "calibrated, 2 threads",
-			    detections, (unsigned long long)det->lastStats().windows);
-		EXPECT_GT(det->lastStats().windows, 0u);
-		EXPECT_GT(detections, 0);
-		if (variant >= 1) {
-			EXPECT_GT(DetectorInternals::of(*det).pyramid.rectsComputed, 0);
-		}
-	}
+	EXPECT_GT(expectAllocationFree(model, false, 1, "LDCF, generic"), 0);
+	EXPECT_GT(expectAllocationFree(model, true, 1, "LDCF, calibrated, placed levels"), 0);
+	EXPECT_GT(expectAllocationFree(model, true, 2, "LDCF, calibrated, 2 threads"), 0);
 }
