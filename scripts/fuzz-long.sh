@@ -72,8 +72,13 @@ for t in "${targets[@]}"; do
 		[[ -n $ended ]] && load=$ended
 	fi
 	corpus=$(find "$work/corpus" -type f | wc -l)
-	findings=$(find "$work/artifacts" -type f | wc -l)
-	row[$t]="| \`$t\` | ${execs:-?} | ${rate:-?} | ${loaded:-?} | $corpus | $findings | $when, $(nproc) cores (load average $load as it ended), \`--runs $runs${max_time:+ --max-time $max_time}\`, timeout ${CALPED_FUZZ_TIMEOUT} s |"
+	# Slow-unit reports are libFuzzer's note of an input over 10 s of wall clock, which load
+	# alone can cause (a hang is a timeout-* file): counted apart, not as findings.
+	findings=$(find "$work/artifacts" -type f ! -name 'slow-unit-*' | wc -l)
+	slow=$(find "$work/artifacts" -type f -name 'slow-unit-*' | wc -l)
+	slowNote=
+	((slow == 0)) || slowNote="; $slow slow-unit reports in artifacts/"
+	row[$t]="| \`$t\` | ${execs:-?} | ${rate:-?} | ${loaded:-?} | $corpus | $findings | $when, $(nproc) cores (load average $load as it ended), \`--runs $runs${max_time:+ --max-time $max_time}\`, timeout ${CALPED_FUZZ_TIMEOUT} s$slowNote |"
 done
 
 tmp=$(mktemp)
