@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Detector::detect on arbitrary frames: the input's first bytes choose one of a few
 // configurations (resize in the pyramid or of the frame, NMS, a cascade threshold, static
-// rejection), the pixel format (declared or not), the size (up to past the maximum), the
+// rejection, one or two threads), the pixel format (declared or not), the size (up to past the maximum), the
 // stride (down to one byte short of a row) and the YUV encoding; the rest are the pixels.
 // Every plane is allocated to exactly the bytes its size and stride give, so a read past
 // a row, a plane or the last row is an ASan report. Detectors are made once per
@@ -66,10 +66,12 @@ DetectorConfig configFor(int k)
 		s.warmupFrames = 2;
 		c.staticRejection = s;
 	}
+	// Two threads: the work cut into segments over the pool at every odd size.
+	c.threads = (k & 32) ? 2 : 1;
 	return c;
 }
 
-constexpr int kConfigs = 32;
+constexpr int kConfigs = 64;
 
 Detector *detectorFor(int k)
 {
