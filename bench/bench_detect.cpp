@@ -58,10 +58,8 @@ bool parseThreadList(const std::string &text, std::vector<long> &out, std::strin
 	size_t at = 0;
 	while (at <= text.size()) {
 		const size_t comma = std::min(text.find(',', at), text.size());
-		const std::string item = text.substr(at, comma - at);
-		char *end = nullptr;
-		const long n = std::strtol(item.c_str(), &end, 10);
-		if (item.empty() || *end != '\0' || n < 1 || n > 64) {
+		long n = 0;
+		if (!apps::parseWhole(text.substr(at, comma - at), n) || n < 1 || n > 64) {
 			error = "--alternate-threads takes thread counts 1..64 separated by commas, got \"" + text + "\"";
 			return false;
 		}

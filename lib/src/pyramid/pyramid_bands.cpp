@@ -118,7 +118,7 @@ Status Pyramid::computeBands(FrameInput &input, const CellRange *levelRows)
 		const int w1 = l.width * params_.shrink, h1 = l.height * params_.shrink;
 		if (!s.levelLuv[0].fits(w1, h1) || (i == halfLevel_ && !halfLuv_[0].fits(w1, h1)))
 			return Status::error(ErrorCode::ImageTooLarge, "level %d does not fit", i);
-		if (r.luv.empty() || r.chan.empty())
+		if (r.chan.empty()) // a half-size image only the smaller octaves read
 			continue;
 		needRects_[i][0] = LevelRect{ r.raw, CellRange{ 0, l.width } };
 		needCount_[i] = 1;
