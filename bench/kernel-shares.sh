@@ -51,7 +51,7 @@ profile() { # name, first frame, frames, bench arguments... -> $tmp/name.tsv: ke
 		--frames data/pets/frames --first "$from" --count "$count" --repeat 1 --resize 2 --threads 1 \
 		--calib "$calib" "$@" >/dev/null 2>&1
 	# Self cost per function, grouped: kernels by name without their build suffix (the
-	# resampler's column pass counts as resampling), everything else as "other".
+	# resampler's column pass counts as resampling, the histograms' helpers as gradHist4), everything else as "other".
 	callgrind_annotate --threshold=100 "$tmp/$name.out" 2>/dev/null | awk '
 		/PROGRAM TOTALS/ { gsub(",", "", $1); print "total\t" $1; next }
 		/^ *[0-9,]+ +\(/ && /:/ {
@@ -61,6 +61,7 @@ profile() { # name, first frame, frames, bench arguments... -> $tmp/name.tsv: ke
 			if (f ~ /calped::kernels::/) {
 				k = f; sub(/.*::/, "", k); sub(/_(ref|opt|avx2|neon)$/, "", k)
 				if (k == "columnPass" || k == "planPairs") k = "resamplePlanes"
+				if (k == "sumEightPixels" || k == "hist6") k = "gradHist4"
 				if (k == "") k = "other"
 				if (k ~ /^scan/) k = "trees" # the grid scan (generic) or the list (calibrated)
 			}

@@ -306,8 +306,9 @@ uint64_t scanDepth2List_neon(const uint16_t *chns, ptrdiff_t rowStride, const ui
 			     size_t count, int step, const Depth2Tree *trees, int nTrees,
 			     int32_t cascThr, WindowHit *hits, uint64_t capacity);
 
-// AVX2 builds of the portable optimised kernels (x86/portable_avx2.cpp), and RGB8
-// resampling at any ratio in 32-bit lanes (x86/resample_rgb8_avx2.cpp).
+// AVX2 kernels whose declarations are not beside their reference: RGB8 resampling at any
+// ratio in 32-bit lanes (x86/resample_rgb8_avx2.cpp), triangle smoothing in one pass per
+// row (x86/smooth_avx2.cpp), the triangle sum and plane resampling.
 void resampleRgb8_avx2(const uint8_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
 		       uint8_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 		       const ResampleTap *xTaps, const ResampleTap *yTaps, int32_t *rowTmp);

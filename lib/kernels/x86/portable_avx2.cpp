@@ -5,29 +5,14 @@
 // cannot assume).
 #include "opt/hist2_body.h"
 #include "opt/hist_body.h"
-#include "opt/smooth_body.h"
 
 namespace calped {
 namespace kernels {
-
-void smoothTri1_avx2(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
-		     ptrdiff_t dstStride, int width, int height, uint32_t *rowTmp)
-{
-	smoothTri1Body(src, srcStride, dst, dstStride, width, height, rowTmp);
-}
 
 void shrink4_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
 		  uint16_t *dst, ptrdiff_t dstStride, int extraShift, uint32_t *scratch)
 {
 	shrink4Body(src, srcStride, width, height, dst, dstStride, extraShift, scratch);
-}
-
-void gradHist4_avx2(const uint16_t *mag, const uint16_t *orient, ptrdiff_t stride, int width,
-		    int height, int nOrients, bool interpolate, uint16_t *const *hist,
-		    ptrdiff_t histStride, uint32_t *scratch)
-{
-	gradHist4Body(mag, orient, stride, width, height, nOrients, interpolate, hist, histStride,
-		      scratch);
 }
 
 // The rows of per-pixel contributions vectorise; shrink2 has its own (aggregate2_avx2.cpp).
