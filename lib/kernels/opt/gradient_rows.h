@@ -58,6 +58,28 @@ inline void strongestGradientRow(const uint16_t *const planes[3], ptrdiff_t stri
 	}
 }
 
+// The strongest channel's doubled derivatives at one pixel, borders as in rowDerivatives.
+inline void strongestGradientAt(const uint16_t *const planes[3], ptrdiff_t stride, int width,
+				int height, int x, int y, int32_t &gx, int32_t &gy)
+{
+	const int up = y > 0 ? y - 1 : y, down = y < height - 1 ? y + 1 : y;
+	const int vScale = height < 2 ? 0 : (y == 0 || y == height - 1 ? 2 : 1);
+	const int left = x > 0 ? x - 1 : x, right = x < width - 1 ? x + 1 : x;
+	const int hScale = width < 2 ? 0 : (x == 0 || x == width - 1 ? 2 : 1);
+	uint32_t best = 0;
+	for (int c = 0; c < 3; c++) {
+		const uint16_t *p = planes[c];
+		const int32_t cx = clampDiff(hScale * (int32_t(p[y * stride + right]) - int32_t(p[y * stride + left])));
+		const int32_t cy = clampDiff(vScale * (int32_t(p[down * stride + x]) - int32_t(p[up * stride + x])));
+		const uint32_t m2 = uint32_t(cx * cx) + uint32_t(cy * cy);
+		if (c == 0 || m2 > best) {
+			best = m2;
+			gx = cx;
+			gy = cy;
+		}
+	}
+}
+
 // Magnitude (Q16) and orientation of one pixel from its doubled derivatives.
 inline void gradientPixel(const GradientTables &t, int32_t gx, int32_t gy, uint16_t *mag,
 			  uint16_t *orient)

@@ -4,25 +4,25 @@
 
 #include <immintrin.h>
 
-#include <initializer_list>
-
 namespace calped {
 namespace kernels {
 namespace {
 
-// Number of significant bits of each 32-bit lane (0 for 0), by binary search.
+// Number of significant bits of each 32-bit lane (0 for 0), from the exponent of its
+// half converted to float. The conversion rounds to nearest, so the exponent may be one
+// too large (when rounding carries into the next power of two); shifting the half down
+// by it then leaves 0, which corrects it.
 inline __m256i bitLength8(__m256i v)
 {
-	const __m256i zero = _mm256_setzero_si256(), ones = _mm256_set1_epi32(-1);
-	__m256i bits = zero;
-	for (int s : { 16, 8, 4, 2, 1 }) {
-		const __m256i shifted = _mm256_srli_epi32(v, s);
-		const __m256i nonzero = _mm256_xor_si256(_mm256_cmpeq_epi32(shifted, zero), ones);
-		bits = _mm256_add_epi32(bits, _mm256_and_si256(nonzero, _mm256_set1_epi32(s)));
-		v = _mm256_blendv_epi8(v, shifted, nonzero);
-	}
-	// v is now 0 or 1: add one where it is 1.
-	return _mm256_sub_epi32(bits, _mm256_xor_si256(_mm256_cmpeq_epi32(v, zero), ones));
+	const __m256i half = _mm256_srli_epi32(v, 1); // below 2^31: a non-negative int
+	__m256i e = _mm256_srli_epi32(_mm256_castps_si256(_mm256_cvtepi32_ps(half)), 23);
+	e = _mm256_sub_epi32(e, _mm256_set1_epi32(127)); // floor(log2(half)), or one more
+	const __m256i over = _mm256_cmpeq_epi32(_mm256_srlv_epi32(half, e), _mm256_setzero_si256());
+	e = _mm256_add_epi32(e, over);
+	// bitLength(v) = floor(log2(half)) + 2 for v >= 2; v itself for 0 and 1 (whose e is
+	// far below).
+	return _mm256_max_epi32(_mm256_add_epi32(e, _mm256_set1_epi32(2)),
+				_mm256_min_epu32(v, _mm256_set1_epi32(1)));
 }
 
 // (a * b + 2^(s-1)) >> s per 32-bit lane, for non-negative a and b whose 64-bit product

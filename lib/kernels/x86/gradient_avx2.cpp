@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: BSD-2-Clause
-// Gradient magnitude and orientation with AVX2: the per-pixel part (normalisation,
-// square-root and orientation tables) eight pixels at a time, with gathers. Compiled with
-// -mavx2 and used only when the CPU has AVX2. Bit-identical to ref/gradient_ref.cpp:
-// the reference's cosine gx * rsqrt * 2^-(20 + k/2) is formed here as
+// Gradient magnitude and orientation with AVX2, eight pixels at a time in one pass per
+// row: each colour channel's doubled derivatives (from the row's neighbours and the rows
+// above and below), the strongest channel kept, then the per-pixel part (normalisation,
+// square-root and orientation tables) with gathers. The first and last pixel of a row
+// (one-sided differences) and rows of a one-row image go through the scalar path.
+// Compiled with -mavx2 and used only when the CPU has AVX2. Bit-identical to
+// ref/gradient_ref.cpp: the reference's cosine gx * rsqrt * 2^-(20 + k/2) is formed here as
 // (gx << (10 - k/2)) * rsqrt = cos * 2^30, which fits 32 bits because |gx| <= sqrt(m2)
 // < sqrt((m + 1) * 2^k) and rsqrtQ20[m] is at most 2^-13 above 2^20 / sqrt(m) (so
 // |cos * 2^30| < 2^30 * (1 + 2^-10)); its product with 10000 is taken in 64-bit lanes.
 #include <immintrin.h>
 
 #include <cstddef>
+#include <initializer_list>
 
 #include "opt/gradient_rows.h"
 #include "x86/avx2_util.h"
@@ -32,11 +36,9 @@ inline __m256i cosSteps8(__m256i absP)
 	return _mm256_blend_epi32(even, _mm256_slli_epi64(odd, 32), 0xAA);
 }
 
-void gradientPixels8(const GradientTables &t, const int32_t *gxp, const int32_t *gyp,
-		     uint16_t *mag, uint16_t *orient)
+// Magnitude and orientation of eight pixels from their doubled derivatives.
+void gradientPixels8(const GradientTables &t, __m256i gx, __m256i gy, uint16_t *mag, uint16_t *orient)
 {
-	const __m256i gx = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(gxp));
-	const __m256i gy = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(gyp));
 	const __m256i zero = _mm256_setzero_si256();
 	const __m256i m2 = _mm256_add_epi32(_mm256_mullo_epi32(gx, gx), _mm256_mullo_epi32(gy, gy));
 	const __m256i isZero = _mm256_cmpeq_epi32(m2, zero);
@@ -69,6 +71,44 @@ void gradientPixels8(const GradientTables &t, const int32_t *gxp, const int32_t 
 	_mm_storeu_si128(reinterpret_cast<__m128i *>(orient), _mm256_extracti128_si256(packed, 1));
 }
 
+inline __m256i load8(const uint16_t *p)
+{
+	return _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(p)));
+}
+
+inline __m256i clampDiff8(__m256i v)
+{
+	return _mm256_max_epi32(_mm256_min_epi32(v, _mm256_set1_epi32(46340)), _mm256_set1_epi32(-46340));
+}
+
+// The strongest channel's doubled derivatives of eight pixels x .. x + 7 of a row, for
+// 1 <= x and x + 8 < width (central differences across); vShift doubles the vertical
+// one on the first and last rows. The earlier channel wins ties, as in the reference.
+inline void strongest8(const uint16_t *const planes[3], ptrdiff_t rowOffset, ptrdiff_t upOffset,
+		       ptrdiff_t downOffset, __m128i vShift, __m256i &gx, __m256i &gy)
+{
+	__m256i best = _mm256_setzero_si256();
+	for (int c = 0; c < 3; c++) {
+		const uint16_t *row = planes[c] + rowOffset;
+		const __m256i cx = clampDiff8(_mm256_sub_epi32(load8(row + 1), load8(row - 1)));
+		const __m256i cy = clampDiff8(_mm256_sll_epi32(
+			_mm256_sub_epi32(load8(planes[c] + downOffset), load8(planes[c] + upOffset)), vShift));
+		const __m256i m2 = _mm256_add_epi32(_mm256_mullo_epi32(cx, cx), _mm256_mullo_epi32(cy, cy));
+		if (c == 0) {
+			gx = cx;
+			gy = cy;
+			best = m2;
+			continue;
+		}
+		// Where best >= m2 (unsigned) the earlier channel stays.
+		const __m256i larger = _mm256_max_epu32(m2, best);
+		const __m256i keep = _mm256_cmpeq_epi32(larger, best);
+		gx = _mm256_blendv_epi8(cx, gx, keep);
+		gy = _mm256_blendv_epi8(cy, gy, keep);
+		best = larger;
+	}
+}
+
 } // namespace
 
 void gradMagOrient_avx2(const GradientTables &t, const uint16_t *const planes[3],
@@ -77,14 +117,33 @@ void gradMagOrient_avx2(const GradientTables &t, const uint16_t *const planes[3]
 {
 	int32_t *bx = scratch, *by = bx + width, *cx = by + width, *cy = cx + width;
 	for (int y = 0; y < height; y++) {
-		strongestGradientRow(planes, stride, width, height, y, bx, by, cx, cy);
 		uint16_t *mo = mag + y * outStride;
 		uint16_t *oo = orient + y * outStride;
-		int x = 0;
-		for (; x + 8 <= width; x += 8)
-			gradientPixels8(t, bx + x, by + x, mo + x, oo + x);
-		for (; x < width; x++)
-			gradientPixel(t, bx[x], by[x], mo + x, oo + x);
+		// Rows too short for a block, and a one-row image: the whole row in scalar.
+		if (width < 10 || height < 2) {
+			strongestGradientRow(planes, stride, width, height, y, bx, by, cx, cy);
+			for (int x = 0; x < width; x++)
+				gradientPixel(t, bx[x], by[x], mo + x, oo + x);
+			continue;
+		}
+		const int up = y > 0 ? y - 1 : y, down = y < height - 1 ? y + 1 : y;
+		const __m128i vShift = _mm_cvtsi32_si128(y == 0 || y == height - 1 ? 1 : 0);
+		// Blocks of eight from x = 1; the last block ends at width - 2 and may overlap
+		// the one before (the same values written again).
+		for (int x = 1;; x += 8) {
+			x = x + 8 < width ? x : width - 9;
+			__m256i gx, gy;
+			strongest8(planes, y * stride + x, up * stride + x, down * stride + x, vShift, gx, gy);
+			gradientPixels8(t, gx, gy, mo + x, oo + x);
+			if (x == width - 9)
+				break;
+		}
+		// The first and last pixel: one-sided horizontal differences.
+		for (int x : { 0, width - 1 }) {
+			int32_t gx = 0, gy = 0;
+			strongestGradientAt(planes, stride, width, height, x, y, gx, gy);
+			gradientPixel(t, gx, gy, mo + x, oo + x);
+		}
 	}
 }
 
