@@ -134,20 +134,7 @@ inline __m256i loadLanes(const uint16_t *in, const int32_t base[2])
 	return _mm256_xor_si256(both, _mm256_set1_epi16(-0x8000));
 }
 
-// The rounded weighted sums of a pair block's eight outputs (before the shift).
-inline __m256i pairSums(const PairPlan &p, const uint16_t *in)
-{
-	const __m256i s = loadLanes(in, p.base);
-	__m256i acc = _mm256_add_epi32(
-		loadConst(p.bias),
-		_mm256_madd_epi16(_mm256_shuffle_epi8(s, loadConst(p.shuffle[0])), loadConst(p.weight[0])));
-	if (p.pairs > 1)
-		acc = _mm256_add_epi32(acc, _mm256_madd_epi16(_mm256_shuffle_epi8(s, loadConst(p.shuffle[1])),
-							      loadConst(p.weight[1])));
-	return acc;
-}
-
-// The same for a wide block: each output's 8 samples times its 8 weights, summed across
+// A wide block: each output's 8 samples times its 8 weights, summed across
 // lanes (products below 2^31, sums below 2^32, so the wrapping adds are exact).
 inline __m256i wideSums(const WidePlan &p, const uint16_t *in, __m256i acc)
 {
@@ -278,35 +265,66 @@ void columnPass(uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 	}
 }
 
-// The row pass of one chunk of blocks (outputs [x0, end)) over every source row.
+// Rounded unsigned sums below 2^32 of eight outputs: shifted logically, saturated to
+// 16 bits and stored.
+inline void storeSums(__m256i acc, uint16_t *out)
+{
+	const __m256i v = _mm256_min_epu32(_mm256_srli_epi32(acc, kQ), _mm256_set1_epi32(65535));
+	const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(v, v), 0xD8);
+	_mm_storeu_si128(reinterpret_cast<__m128i *>(out), _mm256_castsi256_si128(packed));
+}
+
+// A pair block down every source row, its plan held in registers.
+template <int Pairs>
+void pairBlockRows(const PairPlan &p, const uint16_t *src, ptrdiff_t srcStride, int srcHeight,
+		   uint16_t *out, ptrdiff_t tmpStride)
+{
+	const __m256i bias = loadConst(p.bias);
+	const __m256i shuffle0 = loadConst(p.shuffle[0]), weight0 = loadConst(p.weight[0]);
+	const __m256i shuffle1 = loadConst(p.shuffle[1]), weight1 = loadConst(p.weight[1]);
+	for (int y = 0; y < srcHeight; y++) {
+		const __m256i s = loadLanes(src + y * srcStride, p.base);
+		__m256i acc = _mm256_add_epi32(bias, _mm256_madd_epi16(_mm256_shuffle_epi8(s, shuffle0), weight0));
+		if (Pairs > 1)
+			acc = _mm256_add_epi32(acc, _mm256_madd_epi16(_mm256_shuffle_epi8(s, shuffle1), weight1));
+		storeSums(acc, out + y * tmpStride);
+	}
+}
+
+// The row pass of one chunk of blocks (outputs [x0, end)) over every source row: in bands
+// of rows that stay in the caches nearest the core, block by block down the band's rows, so
+// that each block's plan is read once a band.
+constexpr int kBandRows = 32;
+
 void rowPassChunk(const uint16_t *src, ptrdiff_t srcStride, int srcHeight, const BlockPlan *plans,
 		  int blocks, int tail, int end, const ResampleTap *xTaps, uint16_t *tmp,
 		  ptrdiff_t tmpStride)
 {
-	const __m256i half = _mm256_set1_epi32(1 << (kQ - 1)), max = _mm256_set1_epi32(65535);
-	for (int y = 0; y < srcHeight; y++) {
-		const uint16_t *in = src + y * srcStride;
-		uint16_t *out = tmp + y * tmpStride;
+	const __m256i half = _mm256_set1_epi32(1 << (kQ - 1));
+	for (int y0 = 0; y0 < srcHeight; y0 += kBandRows) {
+		const int rows = std::min(kBandRows, srcHeight - y0);
+		const uint16_t *in = src + y0 * srcStride;
+		uint16_t *out = tmp + y0 * tmpStride;
 		for (int b = 0; b < blocks; b++) {
 			const BlockPlan &p = plans[b];
 			const int x0 = p.x0;
-			__m256i acc;
 			if (p.kind == BlockKind::Pairs) {
-				acc = pairSums(p.pairs, in);
+				if (p.pairs.pairs > 1)
+					pairBlockRows<2>(p.pairs, in, srcStride, rows, out + x0, tmpStride);
+				else
+					pairBlockRows<1>(p.pairs, in, srcStride, rows, out + x0, tmpStride);
 			} else if (p.kind == BlockKind::Wide) {
-				acc = wideSums(p.wide, in, half);
+				for (int y = 0; y < rows; y++)
+					storeSums(wideSums(p.wide, in + y * srcStride, half), out + y * tmpStride + x0);
 			} else {
-				for (int x = x0; x < x0 + 8; x++)
-					out[x] = roundQ14(tapSum(xTaps[x], in));
-				continue;
+				for (int y = 0; y < rows; y++)
+					for (int x = x0; x < x0 + 8; x++)
+						out[y * tmpStride + x] = roundQ14(tapSum(xTaps[x], in + y * srcStride));
 			}
-			// Rounded unsigned sums below 2^32: shift logically, saturate to 16 bits.
-			const __m256i v = _mm256_min_epu32(_mm256_srli_epi32(acc, kQ), max);
-			const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(v, v), 0xD8);
-			_mm_storeu_si128(reinterpret_cast<__m128i *>(out + x0), _mm256_castsi256_si128(packed));
 		}
-		for (int x = tail; x < end; x++)
-			out[x] = roundQ14(tapSum(xTaps[x], in));
+		for (int y = 0; y < rows; y++)
+			for (int x = tail; x < end; x++)
+				out[y * tmpStride + x] = roundQ14(tapSum(xTaps[x], in + y * srcStride));
 	}
 }
 
