@@ -76,10 +76,10 @@ profile() { # name repeat bench-arguments... -> $tmp/name.tsv: kernel <tab> inst
 			fn = (k > 0 && off < end[k]) ? name[k] : ""
 			kern = "other"
 			if (fn ~ /calped::kernels::/) {
-				g = fn; sub(/\(.*/, "", g); gsub(/\(anonymous namespace\)::/, "", g)
+				g = fn; gsub(/\(anonymous namespace\)::/, "", g); sub(/\(.*/, "", g)
 				while (g ~ /<[^<>]*>/) gsub(/<[^<>]*>/, "", g)
 				sub(/.*::/, "", g); sub(/_(ref|opt|avx2|neon)$/, "", g)
-				if (g == "columnPass" || g == "planPairs" || g == "rowPass" || g == "planWindow" || g == "resamplePlane") g = "resamplePlanes"
+				if (g ~ /^(columnPass|planPairs|planBlock|planWindow|planChunk|rowPass|rowPassChunk|windowRows|pairBlockRows|resamplePlane)$/) g = "resamplePlanes"
 				if (g == "sumEightPixels" || g == "hist6") g = "gradHist4"
 				if (g ~ /^scan/) g = "trees"
 				if (g != "") kern = g
