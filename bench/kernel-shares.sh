@@ -50,24 +50,8 @@ profile() { # name, first frame, frames, bench arguments... -> $tmp/name.tsv: ke
 		--toggle-collect='calped::Detector::detect*' "$bench" --model "$model" \
 		--frames data/pets/frames --first "$from" --count "$count" --repeat 1 --resize 2 --threads 1 \
 		--calib "$calib" "$@" >/dev/null 2>&1
-	# Self cost per function, grouped: kernels by name without their build suffix (the
-	# resampler's column pass counts as resampling, the histograms' helpers as gradHist4), everything else as "other".
-	callgrind_annotate --threshold=100 "$tmp/$name.out" 2>/dev/null | awk '
-		/PROGRAM TOTALS/ { gsub(",", "", $1); print "total\t" $1; next }
-		/^ *[0-9,]+ +\(/ && /:/ {
-			n = $1; gsub(",", "", n)
-			f = $0; sub(/^[^:]*:/, "", f); gsub(/\(anonymous namespace\)::/, "", f); sub(/\(.*/, "", f); while (f ~ /<[^<>]*>/) gsub(/<[^<>]*>/, "", f)
-			k = "other"
-			if (f ~ /calped::kernels::/) {
-				k = f; sub(/.*::/, "", k); sub(/_(ref|opt|avx2|neon)$/, "", k)
-				if (k == "columnPass" || k == "planPairs") k = "resamplePlanes"
-				if (k == "sumEightPixels" || k == "hist6") k = "gradHist4"
-				if (k == "") k = "other"
-				if (k ~ /^scan/) k = "trees" # the grid scan (generic) or the list (calibrated)
-			}
-			sum[k] += n
-		}
-		END { for (k in sum) print k "\t" sum[k] }' >"$tmp/$name.tsv"
+	# Self cost per function, grouped by kernel (bench/kernel-name.awk).
+	callgrind_annotate --threshold=100 "$tmp/$name.out" 2>/dev/null | awk -f bench/kernel-name.awk -f bench/callgrind-kernels.awk >"$tmp/$name.tsv"
 }
 
 # Per frame: (a - b) / frames, kernel by kernel (b may be absent: a / frames).
@@ -93,25 +77,4 @@ fi
 
 echo "PETS frames $first-$((first + 2)), resize 2 inside the pyramid, M instructions per frame"
 echo
-echo "| kernel | $label | share | generic | share | ratio |"
-echo "|---|---:|---:|---:|---:|---:|"
-awk -F'\t' '
-	FNR == 1 { file++ }
-	file == 1 { c[$1] = $2; keys[$1] = 1 }
-	file == 2 { g[$1] = $2; keys[$1] = 1 }
-	END {
-		ct = c["total"]; gt = g["total"]
-		for (k in keys) if (k != "total") order[n++] = k
-		# largest generic cost first
-		for (i = 0; i < n; i++) for (j = i + 1; j < n; j++)
-			if (g[order[j]] > g[order[i]]) { t = order[i]; order[i] = order[j]; order[j] = t }
-		for (i = 0; i < n; i++) {
-			k = order[i]
-			if (c[k] + g[k] < 0.005 * (ct + gt)) { oc += c[k]; og += g[k]; continue }
-			printf "| %s | %.1f | %.1f%% | %.1f | %.1f%% | %s |\n", k, c[k] / 1e6, 100 * c[k] / ct,
-				g[k] / 1e6, 100 * g[k] / gt, (g[k] > 0 ? sprintf("%.2f", c[k] / g[k]) : "-")
-		}
-		if (oc + og >= 5e4) printf "| (the rest) | %.1f | %.1f%% | %.1f | %.1f%% | %.2f |\n", oc / 1e6, 100 * oc / ct,
-			og / 1e6, 100 * og / gt, (og > 0 ? oc / og : 0)
-		printf "| **total** | **%.1f** | | **%.1f** | | **%.2f** |\n", ct / 1e6, gt / 1e6, ct / gt
-	}' "$tmp/calibrated.pf" "$tmp/generic.pf"
+awk -v label="$label" -f bench/kernel-table.awk "$tmp/calibrated.pf" "$tmp/generic.pf"

@@ -138,6 +138,9 @@ struct GradientTables {
 	// and rsqrtps(m), docs/channels.md), indexed by a 12-bit mantissa (normalizeEven).
 	uint16_t sqrtQ8[4096];   // ~sqrt(m) * 2^8
 	uint32_t rsqrtQ20[4096]; // ~2^20 / sqrt(m), exact
+	// Both in one entry, rsqrtQ20[m] | sqrtQ8[m] << 32: one read for both where tables
+	// are read lane by lane (NEON has no gather).
+	uint64_t roots[4096];
 	// Orientation (in units of pi/nOrients, kOrientQ fraction bits) from the cosine as the
 	// toolbox indexes its acos table: c = cos * kCosSteps truncated toward zero.
 	uint16_t fromCos[2 * kCosSteps + 1]; // index c + kCosSteps

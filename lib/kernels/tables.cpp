@@ -118,6 +118,8 @@ void buildGradientTables(GradientTables &t, int nOrients, int normRad, double no
 		t.sqrtQ8[m] = static_cast<uint16_t>(std::lround(intelRcp(rs) * 256.0));
 		t.rsqrtQ20[m] = static_cast<uint32_t>(std::lround(rs * (1 << 20))); // exact
 	}
+	for (int m = 0; m < 4096; m++)
+		t.roots[m] = t.rsqrtQ20[m] | uint64_t(t.sqrtQ8[m]) << 32;
 
 	// The toolbox's acos table in single precision (acos(i / 10000), capped at pi - 1e-6),
 	// turned into o = theta * nOrients / pi as its gradQuantize computes it (in float),

@@ -31,13 +31,15 @@ CALPED_NEON_INLINE void gradientPixels4(const GradientTables &t, int32x4_t gx, i
 	const int32x4_t m = vreinterpretq_s32_u32(vshlq_u32(m2, vnegq_s32(k)));
 	const int32x4_t halfK = vshrq_n_s32(k, 1);
 
+	// Both roots of each lane's m in one read: rsqrtQ20 in val[0], sqrtQ8 in val[1].
+	const uint32x4x2_t roots = lookupPairs4(t.roots, m);
 	// |G| = shiftRound(sqrtQ8[m] << k/2, 9), below 2^15.
-	const uint32x4_t sq = vshlq_u32(lookup4(t.sqrtQ8, m), halfK);
+	const uint32x4_t sq = vshlq_u32(roots.val[1], halfK);
 	mag = vrshrn_n_u32(sq, 9);
 
 	// cos * 2^30 of the orientation folded into [0, pi), then the toolbox's acos index
 	// trunc(cos * 10000).
-	const int32x4_t rs = vreinterpretq_s32_u32(lookup4(t.rsqrtQ20, m));
+	const int32x4_t rs = vreinterpretq_s32_u32(roots.val[0]);
 	const uint32x4_t gyNeg = vcltq_s32(gy, vdupq_n_s32(0));
 	const int32x4_t gxf = vbslq_s32(gyNeg, vnegq_s32(gx), gx);
 	const int32x4_t up = vsubq_s32(vdupq_n_s32(10), halfK);

@@ -38,6 +38,16 @@ inline uint32x4_t lookup4(const uint32_t *table, int32x4_t index)
 	return vld1q_u32(v);
 }
 
+// Entries of a table of 64-bit pairs, split: val[0] the low 32 bits of each lane's entry,
+// val[1] the high ones (vld2 de-interleaves the little-endian halves).
+inline uint32x4x2_t lookupPairs4(const uint64_t *table, int32x4_t index)
+{
+	int32_t i[4];
+	vst1q_s32(i, index);
+	const uint64_t v[4] = { table[i[0]], table[i[1]], table[i[2]], table[i[3]] };
+	return vld2q_u32(reinterpret_cast<const uint32_t *>(v));
+}
+
 // Sixteen bytes picked from the 32 of `table` by byte indices below 32.
 inline uint8x16_t lookupBytes32(uint8x16x2_t table, uint8x16_t index)
 {

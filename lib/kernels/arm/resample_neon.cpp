@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Plane resampling with NEON. Row pass: exact halving (the computed octaves) is the
 // rounding halving add of even and odd samples; other ratios work on blocks of eight
-// outputs. When their taps all fall within 16 consecutive source samples (any ratio below
-// about 1.7) the 16 samples are loaded once and each tap's samples picked by a byte table
-// lookup; shrinking by up to 8, each output multiplies its own 8 samples by its weights
+// outputs, planned once for all the planes of a level. When their taps all fall within
+// 16 consecutive source samples (any ratio below about 1.7) the 16 samples are loaded once
+// and each tap's samples picked by a byte table lookup (as many lookups as the block's
+// outputs have taps at most); shrinking by up to 8, each output multiplies its own 8 samples by its weights
 // padded with zeros and sums across lanes. Column pass: whole rows of widening
 // multiply-accumulates. Bit-identical to ref/resample_ref.cpp: weights are non-negative
 // and sum to at most gain * 2^14, so 32-bit sums suffice, and (acc + 2^13) >> 14
@@ -29,6 +30,7 @@ enum class BlockKind {
 
 struct WindowPlan {
 	int32_t base;          // first of the 16 source samples
+	int32_t taps;          // the most taps of the block's outputs (1 to 3)
 	uint8_t bytes[3][16];  // per tap: byte indices of each output's sample within the 16
 	uint16_t weight[3][8]; // per tap: each output's weight (0 for a missing tap)
 };
@@ -56,10 +58,12 @@ bool planWindow(const ResampleTap *taps, int x0, int srcWidth, WindowPlan &p)
 	const int base = std::min(taps[x0].first, srcWidth - 16);
 	if (base < 0)
 		return false;
+	p.taps = 1;
 	for (int i = 0; i < 8; i++) {
 		const ResampleTap &t = taps[x0 + i];
 		if (t.count > 3 || t.first < base || t.first + t.count - base > 16)
 			return false;
+		p.taps = std::max(p.taps, t.count);
 		for (int j = 0; j < 3; j++) {
 			if (!weightFits16(t.weight[j < t.count ? j : 0]))
 				return false;
@@ -152,13 +156,15 @@ inline BlockRegs loadPlan(const WindowPlan &p)
 	return r;
 }
 
-// Eight outputs of one row from the 16 samples at `in`.
+// Eight outputs of one row from the 16 samples at `in`, with the plan's first Taps taps
+// (the others have weight 0 throughout the block).
+template <int Taps>
 inline uint16x8_t plannedBlock(const BlockRegs &p, const uint16_t *in)
 {
 	const uint8x16x2_t samples = { { vreinterpretq_u8_u16(vld1q_u16(in)),
 					 vreinterpretq_u8_u16(vld1q_u16(in + 8)) } };
 	uint32x4_t lo = vdupq_n_u32(0), hi = vdupq_n_u32(0);
-	for (int j = 0; j < 3; j++) {
+	for (int j = 0; j < Taps; j++) {
 		const uint16x8_t s = vreinterpretq_u16_u8(lookupBytes32(samples, p.bytes[j]));
 		lo = vmlal_u16(lo, vget_low_u16(s), vget_low_u16(p.weight[j]));
 		hi = vmlal_u16(hi, vget_high_u16(s), vget_high_u16(p.weight[j]));
@@ -181,54 +187,70 @@ inline uint16x8_t wideBlock(const WidePlan &p, const uint16_t *in)
 	return vcombine_u16(vqrshrn_n_u32(lo, kQ), vqrshrn_n_u32(hi, kQ));
 }
 
-void rowPass(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
-	     int dstWidth, const ResampleTap *xTaps, uint16_t *tmp, ptrdiff_t tmpStride)
-{
-	if (isHalving(xTaps, dstWidth)) {
-		halveRows(src, srcStride, srcHeight, dstWidth, tmp, tmpStride);
-		return;
-	}
-	// Chunks of blocks across, strips of rows down: each block's plan stays in registers
-	// for a strip, and a strip's rows stay in the cache for all the chunk's blocks.
-	constexpr int kStrip = 16;
+// One chunk of up to kChunk blocks across: outputs [first, end), planned once for every
+// plane of a level; blocks run from `first` (the last may start earlier and overlap the
+// one before it, writing the same values there), outputs from `tail` on one at a time.
+struct ChunkPlan {
 	BlockPlan plans[kChunk + 1];
-	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
-		int blocks = std::min(kChunk, (dstWidth - chunk) / 8);
-		for (int b = 0; b < blocks; b++)
-			plans[b].kind = planBlock(xTaps, chunk + 8 * b, srcWidth, plans[b]);
-		const int end = std::min(dstWidth, chunk + 8 * kChunk);
-		// The last few outputs: one more block ending at the row's end, overlapping
-		// the one before (it writes the same values there), or one sample at a time.
-		int tail = chunk + 8 * blocks;
-		if (tail < end && dstWidth >= 8) {
-			plans[blocks].kind = planBlock(xTaps, dstWidth - 8, srcWidth, plans[blocks]);
-			blocks++;
-			tail = end;
-		}
-		for (int y0 = 0; y0 < srcHeight; y0 += kStrip) {
-			const int y1 = std::min(srcHeight, y0 + kStrip);
-			for (int b = 0; b < blocks; b++) {
-				const BlockPlan &p = plans[b];
-				const int x0 = p.x0;
-				const uint16_t *in = src + y0 * srcStride;
-				uint16_t *out = tmp + y0 * tmpStride + x0;
-				if (p.kind == BlockKind::Window) {
-					const BlockRegs regs = loadPlan(p.window);
-					for (int y = y0; y < y1; y++, in += srcStride, out += tmpStride)
-						vst1q_u16(out, plannedBlock(regs, in + p.window.base));
-				} else if (p.kind == BlockKind::Wide) {
-					for (int y = y0; y < y1; y++, in += srcStride, out += tmpStride)
-						vst1q_u16(out, wideBlock(p.wide, in));
-				} else {
-					for (int y = y0; y < y1; y++, in += srcStride, out += tmpStride)
-						for (int i = 0; i < 8; i++)
-							out[i] = rowSample(in, xTaps[x0 + i]);
-				}
+	int blocks, first, tail, end;
+};
+
+void planChunk(const ResampleTap *xTaps, int chunk, int srcWidth, int dstWidth, ChunkPlan &c)
+{
+	c.blocks = std::min(kChunk, (dstWidth - chunk) / 8);
+	for (int b = 0; b < c.blocks; b++)
+		c.plans[b].kind = planBlock(xTaps, chunk + 8 * b, srcWidth, c.plans[b]);
+	c.end = std::min(dstWidth, chunk + 8 * kChunk);
+	c.tail = chunk + 8 * c.blocks;
+	if (c.tail < c.end && dstWidth >= 8) {
+		c.plans[c.blocks].kind = planBlock(xTaps, dstWidth - 8, srcWidth, c.plans[c.blocks]);
+		c.blocks++;
+		c.tail = c.end;
+	}
+	c.first = c.blocks > 0 ? std::min(chunk, c.plans[c.blocks - 1].x0) : chunk;
+}
+
+template <int Taps>
+void windowRows(const WindowPlan &w, const uint16_t *in, ptrdiff_t srcStride, int rows, uint16_t *out,
+		ptrdiff_t tmpStride)
+{
+	const BlockRegs regs = loadPlan(w);
+	for (int y = 0; y < rows; y++, in += srcStride, out += tmpStride)
+		vst1q_u16(out, plannedBlock<Taps>(regs, in + w.base));
+}
+
+// The row pass of one chunk: strips of rows down, each block's plan in registers for a
+// strip, and a strip's rows in the cache for all the chunk's blocks.
+void rowPassChunk(const ChunkPlan &c, const uint16_t *src, ptrdiff_t srcStride, int srcHeight,
+		  const ResampleTap *xTaps, uint16_t *tmp, ptrdiff_t tmpStride)
+{
+	constexpr int kStrip = 16;
+	for (int y0 = 0; y0 < srcHeight; y0 += kStrip) {
+		const int rows = std::min(srcHeight - y0, kStrip);
+		for (int b = 0; b < c.blocks; b++) {
+			const BlockPlan &p = c.plans[b];
+			const int x0 = p.x0;
+			const uint16_t *in = src + y0 * srcStride;
+			uint16_t *out = tmp + y0 * tmpStride + x0;
+			if (p.kind == BlockKind::Window) {
+				if (p.window.taps == 1)
+					windowRows<1>(p.window, in, srcStride, rows, out, tmpStride);
+				else if (p.window.taps == 2)
+					windowRows<2>(p.window, in, srcStride, rows, out, tmpStride);
+				else
+					windowRows<3>(p.window, in, srcStride, rows, out, tmpStride);
+			} else if (p.kind == BlockKind::Wide) {
+				for (int y = 0; y < rows; y++, in += srcStride, out += tmpStride)
+					vst1q_u16(out, wideBlock(p.wide, in));
+			} else {
+				for (int y = 0; y < rows; y++, in += srcStride, out += tmpStride)
+					for (int i = 0; i < 8; i++)
+						out[i] = rowSample(in, xTaps[x0 + i]);
 			}
-			for (int y = y0; y < y1; y++)
-				for (int x = tail; x < end; x++)
-					tmp[y * tmpStride + x] = rowSample(src + y * srcStride, xTaps[x]);
 		}
+		for (int y = y0; y < y0 + rows; y++)
+			for (int x = c.tail; x < c.end; x++)
+				tmp[y * tmpStride + x] = rowSample(src + y * srcStride, xTaps[x]);
 	}
 }
 
@@ -288,21 +310,40 @@ void columnPass(uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 
 } // namespace
 
+// Chunk by chunk of outputs across: the blocks are planned once for all the planes (a
+// level's channels share their row taps), then each plane's rows and columns in that
+// chunk are resampled (tmp holds one plane's chunk at a time).
+void resamplePlanes_neon(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
+			 int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
+			 ptrdiff_t tmpStride)
+{
+	if (isHalving(xTaps, dstWidth)) {
+		for (int i = 0; i < count; i++) {
+			const PlaneJob &j = jobs[i];
+			halveRows(j.src, j.srcStride, srcHeight, dstWidth, tmp, tmpStride);
+			columnPass(j.dst, j.dstStride, dstWidth, dstHeight, j.yTaps, tmp, tmpStride);
+		}
+		return;
+	}
+	ChunkPlan c;
+	for (int chunk = 0; chunk < dstWidth; chunk += 8 * kChunk) {
+		planChunk(xTaps, chunk, srcWidth, dstWidth, c);
+		for (int i = 0; i < count; i++) {
+			const PlaneJob &j = jobs[i];
+			rowPassChunk(c, j.src, j.srcStride, srcHeight, xTaps, tmp, tmpStride);
+			columnPass(j.dst + c.first, j.dstStride, c.end - c.first, dstHeight, j.yTaps,
+				   tmp + c.first, tmpStride);
+		}
+	}
+}
+
 void resamplePlane_neon(const uint16_t *src, ptrdiff_t srcStride, int srcWidth, int srcHeight,
 			uint16_t *dst, ptrdiff_t dstStride, int dstWidth, int dstHeight,
 			const ResampleTap *xTaps, const ResampleTap *yTaps, uint16_t *tmp,
 			ptrdiff_t tmpStride)
 {
-	rowPass(src, srcStride, srcWidth, srcHeight, dstWidth, xTaps, tmp, tmpStride);
-	columnPass(dst, dstStride, dstWidth, dstHeight, yTaps, tmp, tmpStride);
-}
-
-void resamplePlanes_neon(const PlaneJob *jobs, int count, int srcWidth, int srcHeight,
-			 int dstWidth, int dstHeight, const ResampleTap *xTaps, uint16_t *tmp,
-			 ptrdiff_t tmpStride)
-{
-	resampleEachPlane<resamplePlane_neon>(jobs, count, srcWidth, srcHeight, dstWidth, dstHeight,
-					      xTaps, tmp, tmpStride);
+	const PlaneJob job = { src, srcStride, dst, dstStride, yTaps };
+	resamplePlanes_neon(&job, 1, srcWidth, srcHeight, dstWidth, dstHeight, xTaps, tmp, tmpStride);
 }
 
 } // namespace kernels

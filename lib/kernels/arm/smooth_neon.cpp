@@ -2,7 +2,8 @@
 // convTri with radius 1 with NEON, one pass per row: the vertical [1 2 1] of eight pixels
 // at a time stays in registers, and the horizontal neighbours come from the blocks before
 // and after it by lane extraction; (v + 8) >> 4 is the rounding narrowing shift. The row
-// ends replicate their pixel as the reference does. Bit-identical to ref/smooth_ref.cpp.
+// ends replicate their pixel as the reference does; a row's last pixels are its last block
+// of eight, overlapping the one before. Bit-identical to ref/smooth_ref.cpp.
 #include <arm_neon.h>
 
 #include <algorithm>
@@ -63,6 +64,18 @@ void smoothTri1_neon(const uint16_t *src, ptrdiff_t srcStride, uint16_t *dst,
 				vst1q_u16(out + x, vcombine_u16(vrshrn_n_u32(lo, 4), vrshrn_n_u32(hi, 4)));
 				before = cur.hi;
 				cur = next;
+			}
+			// The last pixels as the row's last block of eight, overlapping the one
+			// before (the same values written again).
+			if (x < width) {
+				const int last = width - 8;
+				const Vertical8 v = vertical8(a + last, b + last, c + last);
+				const uint32x4_t left = vdupq_n_u32(vertical(last - 1));
+				const uint32x4_t right = vdupq_n_u32(vertical(width));
+				const uint32x4_t lo = vmlaq_n_u32(vaddq_u32(vextq_u32(left, v.lo, 3), vextq_u32(v.lo, v.hi, 1)), v.lo, 2);
+				const uint32x4_t hi = vmlaq_n_u32(vaddq_u32(vextq_u32(v.lo, v.hi, 3), vextq_u32(v.hi, right, 1)), v.hi, 2);
+				vst1q_u16(out + last, vcombine_u16(vrshrn_n_u32(lo, 4), vrshrn_n_u32(hi, 4)));
+				x = width;
 			}
 		}
 		for (; x < width; x++)
