@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Gradient magnitude and orientation with NEON, eight pixels at a time in one pass:
 // derivatives of the three channels, the strongest kept, then magnitude and orientation
-// with the table reads lane by lane (the row ends take the scalar path of
-// gradient_rows.h). Bit-identical to
-// ref/gradient_ref.cpp: as in the AVX2 build, the reference's cosine
+// with the table reads lane by lane (the row's first and last pixel take the scalar path;
+// the inner pixels after the last whole block are one more block, overlapping).
+// Bit-identical to ref/gradient_ref.cpp: as in the AVX2 build, the reference's cosine
 // gx * rsqrt * 2^-(20 + k/2) is formed as (gx << (10 - k/2)) * rsqrt = cos * 2^30, which
 // fits 32 bits because |gx| <= sqrt(m2), and multiplied by 10000 in widening multiplies.
 #include <arm_neon.h>
@@ -169,6 +169,12 @@ void gradMagOrient_neon(const GradientTables &t, const uint16_t *const planes[3]
 		int x = 1;
 		for (; x + 8 < width; x += 8)
 			gradientPixels8(t, rows, x, vScale, mo + x, oo + x);
+		// The inner pixels left as one more block ending at width - 2, overlapping the
+		// one before (the same values written again).
+		if (x < width - 1 && width >= 10) {
+			gradientPixels8(t, rows, width - 9, vScale, mo + width - 9, oo + width - 9);
+			x = width - 1;
+		}
 		for (; x < width; x++)
 			gradientPixel1(t, rows, x, width, vScale, mo + x, oo + x);
 	}
