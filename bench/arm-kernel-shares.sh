@@ -7,7 +7,8 @@
 # (placed levels) and generic: the frames are detected once and then twice (bench_detect
 # --repeat), and the difference is three detect() calls, so set-up is left out.
 #   bash bench/arm-kernel-shares.sh [aarch64|armhf] [FIRST]   (default aarch64 400; needs
-#   build-TARGET from scripts/cross-test.sh TARGET)
+#   build-TARGET from scripts/cross-test.sh TARGET). Checked on aarch64 only: armhf's load
+#   address below is qemu's documented default, not yet tried.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 

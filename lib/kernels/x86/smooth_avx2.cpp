@@ -15,7 +15,7 @@ namespace kernels {
 
 namespace {
 
-// above + 2 * row + below of the eight pixels at p.
+// above + 2 * row + below of the eight pixels at a, b, c.
 inline __m256i vertical8(const uint16_t *a, const uint16_t *b, const uint16_t *c)
 {
 	const __m256i va = _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(a)));
@@ -36,7 +36,7 @@ inline __m256i horizontal8(__m256i before, __m256i cur, __m256i after)
 	return _mm256_srli_epi32(_mm256_add_epi32(sum, _mm256_set1_epi32(8)), 4);
 }
 
-// Eight or sixteen 32-bit results (each below 2^16) stored as uint16.
+// Sixteen (store16) or eight (store8) 32-bit results, each below 2^16, stored as uint16.
 inline void store16(uint16_t *out, __m256i lo, __m256i hi)
 {
 	const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(lo, hi), 0xD8);
