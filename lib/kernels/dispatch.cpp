@@ -26,6 +26,7 @@ const KernelTable &referenceKernels()
 		shrink2_ref,
 		gradHist2_ref,
 		ldcfFilter_ref,
+		ldcfCell_ref,
 	};
 	return table;
 }
@@ -51,6 +52,7 @@ const KernelTable &portableKernels()
 		shrink2_opt,
 		gradHist2_opt,
 		ldcfFilter_ref,
+		ldcfCell_ref,
 	};
 	return table;
 }
@@ -78,6 +80,7 @@ const KernelTable &avx2Kernels()
 		t.scanDepth2 = scanDepth2_avx2;
 		t.scanDepth2List = scanDepth2List_avx2;
 		t.ldcfFilter = ldcfFilter_avx2;
+		t.ldcfCell = ldcfCell_avx2;
 		return t;
 	}();
 	return table;
@@ -117,6 +120,7 @@ const KernelTable &neonKernels()
 		t.gradHist2 = gradHist2_neon;
 		t.scanDepth2List = scanDepth2List_neon; // the grid stays scalar (trees_neon.cpp)
 		t.ldcfFilter = ldcfFilter_neon;
+		t.ldcfCell = ldcfCell_neon;
 		return t;
 	}();
 	return table;

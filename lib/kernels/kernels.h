@@ -255,6 +255,19 @@ void ldcfFilter_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int he
 		     const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride);
 void ldcfFilter_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
 		     const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride);
+// One cell of a filtered, half-size plane on its own (LdcfFilter::onDemand): what
+// ldcfFilter over the whole width x height plane and then resamplePlane with these taps
+// give at that output. The filter at each full-size cell the taps read (rows yTap.first..,
+// columns xTap.first..), rounded as ldcfFilter_ref rounds it; then the taps along the row
+// and down the column, each rounded as resamplePlane_ref rounds them. |weights| <= 2^15.
+uint16_t ldcfCell_ref(const uint16_t *plane, ptrdiff_t stride, int width, int height,
+		      const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap);
+// SIMD versions: 5x5 filters, cells whose filter reads lie inside the plane
+// (opt/ldcf_body.h); others by the reference.
+uint16_t ldcfCell_avx2(const uint16_t *plane, ptrdiff_t stride, int width, int height,
+		       const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap);
+uint16_t ldcfCell_neon(const uint16_t *plane, ptrdiff_t stride, int width, int height,
+		       const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap);
 
 // ---- boosted trees over sliding windows ------------------------------------------------
 // A complete depth-2 tree with its feature offsets resolved for the level layout:
@@ -386,6 +399,7 @@ struct KernelTable {
 	decltype(&gradHist2_ref) gradHist2;
 	// LDCF's filter (AVX2 and NEON versions; the reference in the portable table).
 	decltype(&ldcfFilter_ref) ldcfFilter;
+	decltype(&ldcfCell_ref) ldcfCell; // (AVX2 and NEON versions; the reference in the portable table)
 };
 
 // The plain scalar references (the specification).

@@ -22,8 +22,9 @@ namespace {
 
 using BoxKey = std::tuple<float, float, float, float>;
 
-// Every window of every level of `pyr` (computed whole), by its box: its score.
-std::map<BoxKey, float> fullLevelScores(Pyramid &pyr, const Classifier &classifier,
+// Every window of every level of `pyr` (computed whole and filtered whole, by `filter`:
+// not on demand), by its box: its score.
+std::map<BoxKey, float> fullLevelScores(Pyramid &pyr, LdcfFilter &filter, const Classifier &classifier,
 					const ModelParams &params)
 {
 	std::map<BoxKey, float> out;
@@ -32,7 +33,9 @@ std::map<BoxKey, float> fullLevelScores(Pyramid &pyr, const Classifier &classifi
 	for (int i = 0; i < pyr.scales().count; i++) {
 		const PyramidLevel &l = pyr.scales().levels[i];
 		uint64_t windows = 0;
-		const uint64_t n = classifier.scan(pyr.classifierLevel(i), hits.data(), hits.size(), &windows);
+		const LevelChannels filtered = filter.apply(pyr.prepare(i));
+		EXPECT_EQ(filtered.onDemand, nullptr);
+		const uint64_t n = classifier.scan(filtered, hits.data(), hits.size(), &windows);
 		EXPECT_EQ(n, windows) << "level " << i << ": every window passes the cascade";
 		for (uint64_t k = 0; k < std::min<uint64_t>(n, hits.size()); k++) {
 			const WindowBox b = boxes.box(l, hits[k].row, hits[k].col);
@@ -76,7 +79,8 @@ TEST(LdcfCalibrated, WindowScoresEqualTheFullLevels)
 	cfg.calibrated->sparseDense = false;
 	ASSERT_TRUE(Detector::create(model, cfg, every).ok());
 
-	// The reference: the same placed levels, computed whole, filtered whole.
+	// The reference: the same placed levels, computed whole, filtered whole (the windows'
+	// scores read each filtered cell on demand).
 	ScaleList placed;
 	ASSERT_TRUE(impl.pyramid.scalesFor(w, h, placed).ok());
 	int source[kMaxLevels];
@@ -85,13 +89,21 @@ TEST(LdcfCalibrated, WindowScoresEqualTheFullLevels)
 	Pyramid full;
 	ASSERT_TRUE(full.init(model.params, w, h, kernels::bestKernels(), cfg.resize).ok());
 	ASSERT_TRUE(full.placeLevels(source, placed.count).ok());
-	ASSERT_TRUE(full.setFilters(model).ok());
+	LdcfFilter wholeFilter;
 
 	size_t compared = 0;
 	for (uint32_t seed = 0; seed < 2; seed++) {
 		const std::vector<uint8_t> frame = test::randomImage(seed, w, h);
 		ASSERT_TRUE(full.compute(frame.data(), 3 * w, w, h).ok());
-		const std::map<BoxKey, float> want = fullLevelScores(full, impl.classifier, model.params);
+		if (seed == 0) {
+			// With the detector's strides, so the trees' offsets hold for both.
+			const ptrdiff_t rowStride = impl.pyramid.classifierRowStride();
+			const ptrdiff_t rows = impl.pyramid.classifierPlaneStride() / rowStride;
+			ASSERT_TRUE(wholeFilter.init(model, int(2 * rows), int(2 * rowStride)).ok());
+			ASSERT_EQ(wholeFilter.rowStride(), rowStride);
+			ASSERT_EQ(wholeFilter.planeStride(), impl.pyramid.classifierPlaneStride());
+		}
+		const std::map<BoxKey, float> want = fullLevelScores(full, wholeFilter, impl.classifier, model.params);
 		for (Detector *which : { det.get(), bands.get(), every.get() }) {
 			const char *mode = which == det.get() ? "rectangles" : which == bands.get() ? "bands" : "every window";
 			Detections d;

@@ -76,3 +76,47 @@ TEST(LdcfFilterKernel, ExtremesSaturateAsTheReference)
 		v = uint16_t(rng());
 	expectEqualToReference(src, w, w, h, impulse, "impulse of weight 1.0, random plane");
 }
+
+// One cell of the filtered, half-size plane on its own (ldcfCell, LdcfFilter::onDemand):
+// every table's, at every output, equals the whole plane filtered (ldcfFilter_ref) and
+// resampled (resamplePlane_ref); odd and even sizes (two or three taps), cells at every
+// distance from the edges, full-range samples, weights of +-1.0, sizes 5 and 3.
+TEST(LdcfCellKernel, EveryTableEqualsTheWholePlaneFilteredAndResampled)
+{
+	std::mt19937 rng(21);
+	std::uniform_int_distribution<int> sample(0, 65535), weight(-32768, 32768), small(0, 2000);
+	const KernelTable *tables[8];
+	const int n = availableKernelTables(tables, 8);
+	size_t compared = 0;
+	const int sizes[][2] = { { 1, 1 }, { 2, 3 }, { 5, 5 }, { 9, 14 }, { 12, 12 }, { 23, 18 }, { 40, 31 } };
+	for (const auto &s : sizes)
+		for (int size : { 5, 3 })
+			for (int range = 0; range < 3; range++) {
+				const int w = s[0], h = s[1], stride = w + 3, mw = (w + 1) / 2, mh = (h + 1) / 2;
+				std::vector<uint16_t> src(size_t(stride) * h);
+				std::vector<int32_t> filter(size_t(size) * size);
+				for (auto &v : src)
+					v = uint16_t(range == 1 ? small(rng) : sample(rng));
+				for (auto &f : filter)
+					f = range == 2 ? (rng() % 2 ? 32768 : -32768) : weight(rng);
+				std::vector<uint16_t> full(size_t(w) * h), tmp(size_t(mw) * h), want(size_t(mw) * mh);
+				std::vector<ResampleTap> xTaps(size_t(mw) + 1), yTaps(size_t(mh) + 1);
+				ASSERT_TRUE(buildResampleTaps(w, mw, 1.0, xTaps.data()));
+				ASSERT_TRUE(buildResampleTaps(h, mh, 1.0, yTaps.data()));
+				ldcfFilter_ref(src.data(), stride, w, h, filter.data(), size, full.data(), w);
+				resamplePlane_ref(full.data(), w, w, h, want.data(), mw, mw, mh, xTaps.data(),
+						  yTaps.data(), tmp.data(), mw);
+				for (int t = 0; t < n; t++)
+					for (int y = 0; y < mh; y++)
+						for (int x = 0; x < mw; x++) {
+							const uint16_t got = tables[t]->ldcfCell(src.data(), stride, w, h,
+												 filter.data(), size, xTaps[size_t(x)],
+												 yTaps[size_t(y)]);
+							ASSERT_EQ(got, want[size_t(y) * mw + x])
+								<< tables[t]->name << " " << w << "x" << h << " filter " << size
+								<< " range " << range << " cell " << y << "," << x;
+							compared++;
+						}
+			}
+	EXPECT_GT(compared, 5000u);
+}

@@ -3,10 +3,13 @@
 // two bytes so that the widening multiply-accumulates (int16 x int16 into int32) sum
 // exactly (opt/ldcf_body.h shows why they give the reference's rounding bit for bit). The
 // plane's two-cell border, where the filter meets the zeros beyond it, is scalar.
+// ldcfCell_neon: one output of the filtered, half-size plane, each full-size value it
+// needs as one row of eight samples per filter row (int32 lanes, byte split as above).
 #include <arm_neon.h>
 
 #include <algorithm>
 
+#include "arm/neon_util.h"
 #include "opt/ldcf_body.h"
 
 namespace calped {
@@ -72,6 +75,50 @@ void ldcfFilter_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int he
 				break;
 		}
 	}
+}
+
+namespace {
+
+// The filter at (y, x) of the plane, every sample inside it and samples x - 2 .. x + 5 of
+// each row read (x + 5 < width): L and H, the byte sums of opt/ldcf_body.h, over int32
+// lanes (below 2^28: 25 x 255 x 2^15), then the reference's rounding and bias.
+// first[a]: filter row a reversed (lane k meets sample x - 2 + k); fifth[a]: its last
+// tap in lane 0 (sample x + 2).
+inline uint16_t filteredAt(const uint16_t *plane, ptrdiff_t stride, int y, int x,
+			   const int32x4_t (&first)[kSize], const int32x4_t (&fifth)[kSize])
+{
+	const uint32x4_t lowByte = vdupq_n_u32(0xFF);
+	int32x4_t lo = vdupq_n_s32(0), hi = lo;
+	for (int a = 0; a < kSize; a++) {
+		const uint16x8_t s = vld1q_u16(plane + (y + kReach - a) * stride + x - kReach);
+		const uint32x4_t s0 = vmovl_u16(vget_low_u16(s)), s4 = vmovl_u16(vget_high_u16(s));
+		lo = vmlaq_s32(lo, vreinterpretq_s32_u32(vandq_u32(s0, lowByte)), first[a]);
+		hi = vmlaq_s32(hi, vreinterpretq_s32_u32(vshrq_n_u32(s0, 8)), first[a]);
+		lo = vmlaq_s32(lo, vreinterpretq_s32_u32(vandq_u32(s4, lowByte)), fifth[a]);
+		hi = vmlaq_s32(hi, vreinterpretq_s32_u32(vshrq_n_u32(s4, 8)), fifth[a]);
+	}
+	// Lane sums in uint32 arithmetic (the same bits as int32's).
+	const uint32x2_t sums = laneSums2(vreinterpretq_u32_s32(lo), vreinterpretq_u32_s32(hi));
+	const int32_t l = int32_t(vget_lane_u32(sums, 0)), h = int32_t(vget_lane_u32(sums, 1));
+	return saturateU16(int64_t(ldcf::fromByteSums(h, l)) + kLdcfBias);
+}
+
+} // namespace
+
+uint16_t ldcfCell_neon(const uint16_t *plane, ptrdiff_t stride, int width, int height,
+		       const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap)
+{
+	if (!ldcf::cellVectorizable(width, height, size, xTap, yTap))
+		return ldcfCell_ref(plane, stride, width, height, filter, size, xTap, yTap);
+	int32x4_t first[kSize], fifth[kSize];
+	for (int a = 0; a < kSize; a++) {
+		const int32_t *f = filter + a * kSize;
+		const int32_t lanes[4] = { f[4], f[3], f[2], f[1] };
+		first[a] = vld1q_s32(lanes);
+		fifth[a] = vsetq_lane_s32(f[0], vdupq_n_s32(0), 0);
+	}
+	return ldcf::resampledCell(xTap, yTap,
+				   [&](int y, int x) { return filteredAt(plane, stride, y, x, first, fifth); });
 }
 
 } // namespace kernels

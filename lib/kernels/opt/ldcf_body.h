@@ -58,6 +58,31 @@ inline bool vectorizable(const int32_t *filter, int size)
 // The reference's rounding from the two byte sums (see above).
 inline int32_t fromByteSums(int32_t hi, int32_t lo) { return (hi + (lo >> 8) + 256) >> 9; }
 
+// ldcfCell's half-size output from the filtered values of the full-size cells its taps
+// read (filtered(y, x)): resamplePlane_ref's pass along the row, then down the column,
+// each rounded as it rounds them.
+template <class Filtered>
+inline uint16_t resampledCell(const ResampleTap &xTap, const ResampleTap &yTap, Filtered filtered)
+{
+	int64_t acc = 0;
+	for (int a = 0; a < yTap.count; a++) {
+		int64_t row = 0;
+		for (int b = 0; b < xTap.count; b++)
+			row += int64_t(xTap.weight[b]) * filtered(yTap.first + a, xTap.first + b);
+		acc += int64_t(yTap.weight[a]) * saturateU16(shiftRound(row, kQ));
+	}
+	return saturateU16(shiftRound(acc, kQ));
+}
+
+// Whether ldcfCell's vector versions take this cell: a 5 x 5 filter whose samples lie
+// inside the plane, and rows of eight samples from two before each full-size cell.
+inline bool cellVectorizable(int width, int height, int size, const ResampleTap &xTap,
+			     const ResampleTap &yTap)
+{
+	return size == 5 && xTap.first >= 2 && xTap.first + xTap.count - 1 + 5 < width &&
+	       yTap.first >= 2 && yTap.first + yTap.count - 1 + 2 < height;
+}
+
 // Every output outside rows [r, height - r) x columns [r, width - r) (where the vector
 // loops, which read no sample beyond the plane, do not go), by pixel().
 inline void border(const uint16_t *src, ptrdiff_t srcStride, int width, int height,

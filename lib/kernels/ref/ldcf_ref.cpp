@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // LDCF's decorrelation filter, the reference: Matlab's conv2(C, f, 'same') of one Q14
-// channel with a Q15 filter, zero outside the plane, into biased Q12.
+// channel with a Q15 filter, zero outside the plane, into biased Q12; and one cell of the
+// filtered plane resampled to half size, on its own.
 #include "kernels.h"
 #include "fixed_point.h"
 
@@ -30,6 +31,41 @@ void ldcfFilter_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int hei
 			}
 			dst[y * dstStride + x] = saturateU16(shiftRound(acc, shift) + kLdcfBias);
 		}
+}
+
+namespace {
+
+// Output (y, x) of ldcfFilter_ref over the whole plane.
+uint16_t filtered(const uint16_t *src, ptrdiff_t stride, int width, int height,
+		  const int32_t *filter, int size, int y, int x)
+{
+	const int r = size / 2;
+	int64_t acc = 0;
+	for (int a = 0; a < size; a++)
+		for (int b = 0; b < size; b++) {
+			const int sy = y + r - a, sx = x + r - b;
+			if (sy >= 0 && sy < height && sx >= 0 && sx < width)
+				acc += int64_t(filter[a * size + b]) * src[sy * stride + sx];
+		}
+	return saturateU16(shiftRound(acc, kQ + 15 - kLdcfQ) + kLdcfBias);
+}
+
+} // namespace
+
+uint16_t ldcfCell_ref(const uint16_t *plane, ptrdiff_t stride, int width, int height,
+		      const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap)
+{
+	// resamplePlane_ref's two passes for one output: along the rows the taps read, then
+	// down the column.
+	int64_t acc = 0;
+	for (int a = 0; a < yTap.count; a++) {
+		int64_t row = 0;
+		for (int b = 0; b < xTap.count; b++)
+			row += int64_t(xTap.weight[b]) *
+			       filtered(plane, stride, width, height, filter, size, yTap.first + a, xTap.first + b);
+		acc += int64_t(yTap.weight[a]) * saturateU16(shiftRound(row, kQ));
+	}
+	return saturateU16(shiftRound(acc, kQ));
 }
 
 } // namespace kernels

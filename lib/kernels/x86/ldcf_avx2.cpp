@@ -3,6 +3,8 @@
 // its two bytes so that _mm256_madd_epi16 multiplies adjacent taps' int16 pairs into exact
 // 32-bit sums (opt/ldcf_body.h shows why they give the reference's rounding bit for bit).
 // The plane's two-cell border, where the filter meets the zeros beyond it, is scalar.
+// ldcfCell_avx2: one output of the filtered, half-size plane, each full-size value it
+// needs as one row of eight samples per filter row (int32 lanes, byte split as above).
 #include <immintrin.h>
 
 #include <algorithm>
@@ -85,6 +87,49 @@ void ldcfFilter_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int he
 				break;
 		}
 	}
+}
+
+namespace {
+
+// The filter at (y, x) of the plane, every sample inside it and samples x - 2 .. x + 5 of
+// each row read (x + 5 < width): L and H, the byte sums of opt/ldcf_body.h, over int32
+// lanes (below 2^28: 25 x 255 x 2^15), then the reference's rounding and bias.
+inline uint16_t filteredAt(const uint16_t *plane, ptrdiff_t stride, int y, int x,
+			   const __m256i (&reversed)[kSize])
+{
+	const __m256i lowByte = _mm256_set1_epi32(0xFF);
+	__m256i lo = _mm256_setzero_si256(), hi = _mm256_setzero_si256();
+	for (int a = 0; a < kSize; a++) {
+		// Filter row a meets samples (y + 2 - a, x - 2 .. x + 2), lanes 0-4.
+		const __m128i row = _mm_loadu_si128(
+			reinterpret_cast<const __m128i *>(plane + (y + kReach - a) * stride + x - kReach));
+		const __m256i s = _mm256_cvtepu16_epi32(row);
+		lo = _mm256_add_epi32(lo, _mm256_mullo_epi32(_mm256_and_si256(s, lowByte), reversed[a]));
+		hi = _mm256_add_epi32(hi, _mm256_mullo_epi32(_mm256_srli_epi32(s, 8), reversed[a]));
+	}
+	// Lane sums: [L, H, L, H] after the two horizontal adds.
+	const __m256i pairs = _mm256_hadd_epi32(lo, hi);
+	__m128i t = _mm_add_epi32(_mm256_castsi256_si128(pairs), _mm256_extracti128_si256(pairs, 1));
+	t = _mm_hadd_epi32(t, t);
+	const int32_t l = _mm_cvtsi128_si32(t), h = _mm_extract_epi32(t, 1);
+	return saturateU16(int64_t(ldcf::fromByteSums(h, l)) + kLdcfBias);
+}
+
+} // namespace
+
+uint16_t ldcfCell_avx2(const uint16_t *plane, ptrdiff_t stride, int width, int height,
+		       const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap)
+{
+	if (!ldcf::cellVectorizable(width, height, size, xTap, yTap))
+		return ldcfCell_ref(plane, stride, width, height, filter, size, xTap, yTap);
+	// Each filter row reversed into lanes 0-4 (lane k meets sample x - 2 + k), zeros after.
+	const __m256i firstFive = _mm256_setr_epi32(-1, -1, -1, -1, -1, 0, 0, 0);
+	const __m256i reverse = _mm256_setr_epi32(4, 3, 2, 1, 0, 5, 6, 7);
+	__m256i reversed[kSize];
+	for (int a = 0; a < kSize; a++)
+		reversed[a] = _mm256_permutevar8x32_epi32(_mm256_maskload_epi32(filter + a * kSize, firstFive), reverse);
+	return ldcf::resampledCell(xTap, yTap,
+				   [&](int y, int x) { return filteredAt(plane, stride, y, x, reversed); });
 }
 
 } // namespace kernels

@@ -83,10 +83,60 @@ void Classifier::windowGrid(int paddedHeight, int paddedWidth, int &rows, int &c
 	cols = std::max(0, (paddedWidth * shrink - params_.modelDsPadW + stride) / stride);
 }
 
+int32_t Classifier::scoreOnDemand(LdcfFilter &level, ptrdiff_t base) const
+{
+	int32_t h = 0;
+	if (depth2_) {
+		for (int t = 0; t < nTrees_; t++) {
+			const kernels::Depth2Tree &tr = depth2Trees_[size_t(t)];
+			const int right = level.at(base + tr.off[0]) >= tr.thr[0];
+			const int node = 1 + right;
+			h += tr.leaf[2 * right + (level.at(base + tr.off[node]) >= tr.thr[node])];
+			if (h <= cascThr_)
+				break;
+		}
+		return h;
+	}
+	for (int t = 0; t < nTrees_; t++) {
+		const kernels::TreeNode *tree = nodes_.data() + size_t(t) * nodesPerTree_;
+		uint32_t k = 0;
+		while (tree[k].child)
+			k = tree[k].child + (level.at(base + tree[k].off) >= tree[k].thr ? 1 : 0);
+		h += tree[k].leaf;
+		if (h <= cascThr_)
+			break;
+	}
+	return h;
+}
+
+namespace {
+
+// The reference kernels' record of a window that passed the cascade.
+void keepHit(int32_t h, int32_t cascThr, int r, int c, kernels::WindowHit *hits, uint64_t capacity,
+	     uint64_t &passed)
+{
+	if (h > cascThr) {
+		if (passed < capacity)
+			hits[passed] = { r, c, h };
+		passed++;
+	}
+}
+
+} // namespace
+
 uint64_t Classifier::scanList(const LevelChannels &level, const uint32_t *windows, size_t count,
 			      kernels::WindowHit *hits, uint64_t capacity) const
 {
 	const int step = params_.stride / shrink_;
+	if (level.onDemand) {
+		uint64_t passed = 0;
+		for (size_t i = 0; i < count; i++) {
+			const int r = int(windows[i] >> 16), c = int(windows[i] & 0xFFFF);
+			const ptrdiff_t base = ptrdiff_t(r) * step * level.rowStride + ptrdiff_t(c) * step;
+			keepHit(scoreOnDemand(*level.onDemand, base), cascThr_, r, c, hits, capacity, passed);
+		}
+		return passed;
+	}
 	if (depth2_)
 		return k_->scanDepth2List(level.data, level.rowStride, windows, count, step,
 					  depth2Trees_.data(), nTrees_, cascThr_, hits, capacity);
@@ -104,6 +154,15 @@ uint64_t Classifier::scan(const LevelChannels &level, kernels::WindowHit *hits,
 		return 0;
 	*windows += uint64_t(rows) * cols;
 	const int step = stride / shrink;
+	if (level.onDemand) {
+		uint64_t passed = 0;
+		for (int c = 0; c < cols; c++)
+			for (int r = 0; r < rows; r++) {
+				const ptrdiff_t base = ptrdiff_t(r) * step * level.rowStride + ptrdiff_t(c) * step;
+				keepHit(scoreOnDemand(*level.onDemand, base), cascThr_, r, c, hits, capacity, passed);
+			}
+		return passed;
+	}
 	if (depth2_)
 		return k_->scanDepth2(level.data, level.rowStride, rows, cols, step,
 					       depth2Trees_.data(), nTrees_, cascThr_, hits, capacity);

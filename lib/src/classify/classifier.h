@@ -37,6 +37,11 @@ public:
 	void setCascadeThreshold(float thr);
 
 private:
+	// The score of the window whose first cell is `base` in a level computed on demand
+	// (LevelChannels::onDemand), reading each feature through it: the reference kernels'
+	// walk and soft cascade.
+	int32_t scoreOnDemand(LdcfFilter &level, ptrdiff_t base) const;
+
 	ModelParams params_;
 	int shrink_ = 4; // pixels per cell of the channels the trees read (Model::classifierShrink)
 	const kernels::KernelTable *k_ = nullptr;

@@ -9,30 +9,10 @@ namespace calped {
 
 namespace {
 
+constexpr int32_t kMaxWeight = 1 << 15; // Q15: |weight| <= 1, as the model loader checks
+
 // imResample(C, .5): round(n / 2) samples, Matlab's rounding (halves away from zero).
 int halfSize(int n) { return (n + 1) / 2; }
-
-// The outputs whose taps lie inside `src` (taps move forward with the output, so they
-// are one run).
-CellRange outputsInside(const kernels::ResampleTap *taps, int m, const CellRange &src)
-{
-	CellRange out{ m, m };
-	for (int o = 0; o < m; o++)
-		if (taps[o].first >= src.begin && taps[o].first + taps[o].count <= src.end) {
-			if (out.begin == m)
-				out.begin = o;
-			out.end = o + 1;
-		}
-	return out.empty() ? CellRange{} : out;
-}
-
-// Valid input [begin, end) of an n-sample axis: the filter output is exact where its
-// reach stays inside, or meets the plane's own edge (zero beyond it, as conv2 'same').
-CellRange exactFiltered(const CellRange &valid, int n, int reach)
-{
-	return CellRange{ valid.begin > 0 ? valid.begin + reach : 0,
-			  valid.end < n ? valid.end - reach : n };
-}
 
 } // namespace
 
@@ -44,6 +24,9 @@ Status LdcfFilter::init(const Model &model, int maxHeight, int maxWidth, const k
 		return Status::error(ErrorCode::InvalidArgument, "the model has no LDCF filters");
 	if (maxHeight < 1 || maxWidth < 1)
 		return Status::error(ErrorCode::InvalidArgument, "level size %dx%d", maxWidth, maxHeight);
+	for (int32_t f : model.filters)
+		if (f < -kMaxWeight || f > kMaxWeight) // ldcfCell's contract
+			return Status::error(ErrorCode::InvalidArgument, "LDCF filter weight %d beyond 2^15", int(f));
 	k_ = &k;
 	nFilters_ = p.nFilters;
 	size_ = p.filterSize;
@@ -55,11 +38,11 @@ Status LdcfFilter::init(const Model &model, int maxHeight, int maxWidth, const k
 		tmp_.allocate(halfSize(maxWidth), maxHeight);
 		xTaps_.resize(size_t(halfSize(maxWidth)) + 1);
 		yTaps_.resize(size_t(halfSize(maxHeight)) + 1);
-		yShifted_.resize(size_t(halfSize(maxHeight)) + 1);
-		xShifted_.resize(size_t(halfSize(maxWidth)) + 1);
 		rowStride_ = halfSize(maxWidth);
 		planeStride_ = rowStride_ * halfSize(maxHeight);
 		out_.assign(size_t(planeStride_) * kChannelCount * nFilters_, 0);
+		stamp_.assign(out_.size(), 0);
+		generation_ = 0;
 	} catch (const std::bad_alloc &) {
 		return Status::error(ErrorCode::OutOfMemory, "LDCF buffers for %dx%d levels", maxWidth,
 				     maxHeight);
@@ -70,42 +53,30 @@ Status LdcfFilter::init(const Model &model, int maxHeight, int maxWidth, const k
 uint64_t LdcfFilter::bytesFor(int nFilters, uint64_t maxHeight, uint64_t maxWidth)
 {
 	// As init() sizes them: the filtered level and the row pass (uint16), the half-size
-	// output planes, and four tap arrays.
+	// output planes (uint16) with a stamp each (uint8), and two tap arrays.
 	const uint64_t halfH = (maxHeight + 1) / 2, halfW = (maxWidth + 1) / 2;
-	const uint64_t planes = maxHeight * maxWidth + halfW * maxHeight +
-				halfH * halfW * uint64_t(kChannelCount) * uint64_t(nFilters);
-	return 2 * planes + (2 * halfW + 2 * halfH + 4) * sizeof(kernels::ResampleTap);
+	const uint64_t outputs = halfH * halfW * uint64_t(kChannelCount) * uint64_t(nFilters);
+	const uint64_t planes = maxHeight * maxWidth + halfW * maxHeight + outputs;
+	return 2 * planes + outputs + (halfW + halfH + 2) * sizeof(kernels::ResampleTap);
 }
 
-LevelChannels LdcfFilter::apply(const LevelChannels &level, const LevelRect *rects, int count,
-				int padH, int padW)
+LevelChannels LdcfFilter::apply(const LevelChannels &level)
 {
 	LevelChannels out;
 	const int h = level.paddedHeight, w = level.paddedWidth;
-	if (!k_ || h < 1 || w < 1 || h > maxHeight_ || w > maxWidth_)
+	if (!k_ || h < 1 || w < 1 || h > maxHeight_ || w > maxWidth_ || !buildTaps(h, w))
 		return out;
 	const int mh = halfSize(h), mw = halfSize(w);
-	// The bias passes through the resampler exactly: its weights sum to 2^14.
-	if (!kernels::buildResampleTaps(w, mw, 1.0, xTaps_.data()) ||
-	    !kernels::buildResampleTaps(h, mh, 1.0, yTaps_.data()))
-		return out;
-	if (!rects) {
-		applyRect(level, CellRange{ 0, h }, CellRange{ 0, w });
-	} else {
-		// Before padding the level is (h - 2 padH) x (w - 2 padW); a rectangle touching
-		// its edge has the padding beyond it too (Pyramid::prepare pads there).
-		const int lh = h - 2 * padH, lw = w - 2 * padW;
-		for (int k = 0; k < count; k++) {
-			const LevelRect &r = rects[k];
-			if (r.empty())
-				continue;
-			const CellRange rows{ r.rows.begin <= 0 ? 0 : r.rows.begin + padH,
-					      r.rows.end >= lh ? h : r.rows.end + padH };
-			const CellRange cols{ r.cols.begin <= 0 ? 0 : r.cols.begin + padW,
-					      r.cols.end >= lw ? w : r.cols.end + padW };
-			applyRect(level, rows, cols);
+	const Plane<uint16_t> full = full_.view(w, h);
+	const int taps = size_ * size_;
+	for (int j = 0; j < nFilters_; j++)
+		for (int c = 0; c < kChannelCount; c++) {
+			const int plane = j * kChannelCount + c;
+			k_->ldcfFilter(level.data + c * level.planeStride, level.rowStride, w, h,
+				       filters_.data() + size_t(plane) * taps, size_, full.row(0), full.stride);
+			k_->resamplePlane(full.row(0), full.stride, w, h, out_.data() + plane * planeStride_,
+					  rowStride_, mw, mh, xTaps_.data(), yTaps_.data(), tmp_.data(), mw);
 		}
-	}
 	out.data = out_.data();
 	out.paddedHeight = mh;
 	out.paddedWidth = mw;
@@ -114,42 +85,51 @@ LevelChannels LdcfFilter::apply(const LevelChannels &level, const LevelRect *rec
 	return out;
 }
 
-void LdcfFilter::applyRect(const LevelChannels &level, const CellRange &rows, const CellRange &cols)
+bool LdcfFilter::buildTaps(int h, int w)
 {
+	// The bias passes through the resampler exactly: its weights sum to 2^14.
+	return kernels::buildResampleTaps(w, halfSize(w), 1.0, xTaps_.data()) &&
+	       kernels::buildResampleTaps(h, halfSize(h), 1.0, yTaps_.data());
+}
+
+LevelChannels LdcfFilter::onDemand(const LevelChannels &level)
+{
+	LevelChannels out;
 	const int h = level.paddedHeight, w = level.paddedWidth;
-	const int mh = halfSize(h), mw = halfSize(w);
-	const int reach = size_ / 2;
-	// The outputs computable from this rectangle alone, the filtered cells they read, and
-	// the input those need (conv2 'same' is zero beyond the plane, and so beyond the
-	// window the kernel is given: only the filtered cells `reach` inside it are exact).
-	const CellRange outRows = outputsInside(yTaps_.data(), mh, exactFiltered(rows, h, reach));
-	const CellRange outCols = outputsInside(xTaps_.data(), mw, exactFiltered(cols, w, reach));
-	if (outRows.empty() || outCols.empty())
-		return;
-	const CellRange srcRows = sourceRows(yTaps_.data(), outRows);
-	const CellRange srcCols = sourceRows(xTaps_.data(), outCols);
-	const CellRange inRows = srcRows.grown(reach, h).intersected(rows);
-	const CellRange inCols = srcCols.grown(reach, w).intersected(cols);
-	// The resampler sees only the source rectangle (so exact halving keeps its fast path).
-	shiftTaps(yTaps_.data(), outRows, srcRows.begin, yShifted_.data());
-	shiftTaps(xTaps_.data(), outCols, srcCols.begin, xShifted_.data());
-	const Plane<uint16_t> full = full_.view(w, h);
-	const int taps = size_ * size_;
-	for (int j = 0; j < nFilters_; j++)
-		for (int c = 0; c < kChannelCount; c++) {
-			const int plane = j * kChannelCount + c;
-			k_->ldcfFilter(level.data + c * level.planeStride + inRows.begin * level.rowStride +
-					       inCols.begin,
-				       level.rowStride, inCols.size(), inRows.size(),
-				       filters_.data() + size_t(plane) * taps, size_,
-				       full.row(inRows.begin) + inCols.begin, full.stride);
-			k_->resamplePlane(full.row(srcRows.begin) + srcCols.begin, full.stride,
-					  srcCols.size(), srcRows.size(),
-					  out_.data() + plane * planeStride_ + outRows.begin * rowStride_ +
-						  outCols.begin,
-					  rowStride_, outCols.size(), outRows.size(), xShifted_.data(),
-					  yShifted_.data(), tmp_.data(), outCols.size());
-		}
+	if (!k_ || h < 1 || w < 1 || h > maxHeight_ || w > maxWidth_ || !buildTaps(h, w))
+		return out;
+	// A new generation: nothing of out_ is this level's yet.
+	if (++generation_ == 0) {
+		std::fill(stamp_.begin(), stamp_.end(), uint8_t(0));
+		generation_ = 1;
+	}
+	source_ = level;
+	out.data = out_.data();
+	out.paddedHeight = halfSize(h);
+	out.paddedWidth = halfSize(w);
+	out.rowStride = rowStride_;
+	out.planeStride = planeStride_;
+	out.onDemand = this;
+	return out;
+}
+
+uint16_t LdcfFilter::compute(ptrdiff_t index)
+{
+	const int plane = int(index / planeStride_);
+	const ptrdiff_t inPlane = index - plane * planeStride_;
+	const int oy = int(inPlane / rowStride_), ox = int(inPlane - oy * rowStride_);
+	uint16_t v = 0;
+	// Cells outside the level (no window reads them) stay 0.
+	if (oy < halfSize(source_.paddedHeight) && ox < halfSize(source_.paddedWidth)) {
+		// apply()'s two steps for this cell alone.
+		const uint16_t *channel = source_.data + (plane % kChannelCount) * source_.planeStride;
+		v = k_->ldcfCell(channel, source_.rowStride, source_.paddedWidth, source_.paddedHeight,
+				 filters_.data() + size_t(plane) * size_ * size_, size_, xTaps_[size_t(ox)],
+				 yTaps_[size_t(oy)]);
+	}
+	out_[size_t(index)] = v;
+	stamp_[size_t(index)] = generation_;
+	return v;
 }
 
 CellRange LdcfFilter::levelCellsRead(const CellRange &out, int filterSize, int pad, int size)

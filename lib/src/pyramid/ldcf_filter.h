@@ -26,15 +26,21 @@ public:
 		    const kernels::KernelTable &k = kernels::bestKernels());
 
 	// The filtered level: 10 * nFilters planes (channel c of filter j is plane j * 10 + c)
-	// of round(h / 2) x round(w / 2) cells, with fixed strides. Valid until the next call.
-	LevelChannels apply(const LevelChannels &level) { return apply(level, nullptr, 0, 0, 0); }
-	// The same where `level` is exact only in these rectangles (cells before its padH x
-	// padW padding, as Pyramid::prepare takes them; a rectangle touching the level's edge
-	// includes the padding beyond it): each rectangle filtered on its own, and only the
-	// outputs that read nothing outside it are written (equal to apply(level)'s there);
-	// the rest is stale. rects null: the whole level.
-	LevelChannels apply(const LevelChannels &level, const LevelRect *rects, int count, int padH,
-			    int padW);
+	// of round(h / 2) x round(w / 2) cells, with fixed strides, every cell computed (the
+	// SIMD filter and resampler kernels). Valid until the next call.
+	LevelChannels apply(const LevelChannels &level);
+
+	// The same level computed on demand: each cell computed when at() first reads it, as
+	// apply() computes it, and remembered until the next call. For windows that read a
+	// few percent of the cells (the calibrated method's: docs/calibrated.md). `level` must
+	// stay as it is while the result is read, and be exact wherever the cells read reach
+	// with their filter and resampling taps (LdcfFilter::levelCellsRead).
+	LevelChannels onDemand(const LevelChannels &level);
+	// Cell `index` (plane * planeStride() + row * rowStride() + column) of onDemand()'s level.
+	uint16_t at(ptrdiff_t index)
+	{
+		return stamp_[size_t(index)] == generation_ ? out_[size_t(index)] : compute(index);
+	}
 
 	// The rows (or columns) of a level, before its `pad` cells of padding, that filtered
 	// cells [out.begin, out.end) (padded, half size) read: the half-size resampling's taps
@@ -53,16 +59,23 @@ public:
 	static uint64_t bytesFor(int nFilters, uint64_t maxHeight, uint64_t maxWidth);
 
 private:
-	// One rectangle of exact input (padded rows `rows`, columns `cols` of the h x w level).
-	void applyRect(const LevelChannels &level, const CellRange &rows, const CellRange &cols);
+	// Taps of the half-size resampling of an h x w level (false: beyond the resampler).
+	bool buildTaps(int h, int w);
+	// A cell of onDemand()'s level, computed (kernels::ldcfCell) and remembered.
+	uint16_t compute(ptrdiff_t index);
 
 	const kernels::KernelTable *k_ = nullptr;
 	int nFilters_ = 0, size_ = 0;
 	std::vector<int32_t> filters_;
 	PlaneBuffer<uint16_t> full_; // one filtered channel at the level's size
 	PlaneBuffer<uint16_t> tmp_;  // the resampler's row pass
-	std::vector<kernels::ResampleTap> xTaps_, yTaps_, xShifted_, yShifted_;
+	std::vector<kernels::ResampleTap> xTaps_, yTaps_;
 	std::vector<uint16_t> out_;
+	// onDemand(): the level read, and which cells of out_ hold its values (stamp equal to
+	// the generation, a new one per call; all cleared when it wraps).
+	LevelChannels source_;
+	std::vector<uint8_t> stamp_;
+	uint8_t generation_ = 0;
 	int maxHeight_ = 0, maxWidth_ = 0;
 	ptrdiff_t rowStride_ = 0, planeStride_ = 0;
 };

@@ -84,7 +84,9 @@ LevelChannels Pyramid::classifierLevel(int i, const LevelRect *rects, int count,
 		return level;
 	Scratch &s = *scratch_[size_t(worker)];
 	const auto t0 = StageClock::now();
-	const LevelChannels out = s.filter.apply(level, rects, count, padH_, padW_);
+	// Rectangles' windows (the calibrated method's) read a few percent of the filtered
+	// cells: computed as read. A whole level's windows read most of them: filtered at once.
+	const LevelChannels out = rects ? s.filter.onDemand(level) : s.filter.apply(level);
 	s.msFilter += msSince(t0);
 	return out;
 }

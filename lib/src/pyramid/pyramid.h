@@ -112,8 +112,9 @@ public:
 	Status setFilters(const Model &model);
 	bool filtered() const { return filtered_; }
 	// Level i as the classifier reads it: prepare(i, rects, count, worker), and with
-	// filters the filter stage in the same rectangles (exact where it reads only inside
-	// them: the calibrated method grows its rectangles by LdcfFilter::levelCellsRead).
+	// filters the filter stage: on demand for rectangles (LdcfFilter::onDemand, exact where
+	// the filter reads only inside them: the calibrated method grows its rectangles by
+	// LdcfFilter::levelCellsRead), at once for the whole level (LdcfFilter::apply).
 	LevelChannels classifierLevel(int i, const LevelRect *rects = nullptr, int count = 0,
 				      int worker = 0);
 	// The strides of classifierLevel()'s planes.

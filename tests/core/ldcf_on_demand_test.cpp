@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: BSD-2-Clause
+// LDCF's filter stage on demand (LdcfFilter::onDemand, what the classifier reads) against
+// the whole level filtered at once (LdcfFilter::apply, the SIMD filter and resampler
+// kernels): every cell equal, for levels of odd and even sizes, random and extreme
+// channel values, and reads in any order.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "pyramid/ldcf_filter.h"
+#include "synthetic.h"
+
+using namespace calped;
+
+namespace {
+
+// A padded level of h x w cells, ten planes: random Q14 values, some saturated.
+struct TestLevel {
+	std::vector<uint16_t> data;
+	LevelChannels view;
+};
+
+TestLevel randomLevel(uint32_t seed, int h, int w, bool extremes)
+{
+	TestLevel t;
+	const ptrdiff_t rowStride = w + 3, planeStride = rowStride * (h + 1);
+	t.data.resize(size_t(planeStride) * kChannelCount);
+	std::mt19937 rng(seed);
+	for (uint16_t &v : t.data) {
+		const uint32_t r = rng();
+		v = extremes ? (r % 3 == 0 ? 0 : r % 3 == 1 ? 65535 : uint16_t(r)) : uint16_t(r % 20000);
+	}
+	t.view.data = t.data.data();
+	t.view.paddedHeight = h;
+	t.view.paddedWidth = w;
+	t.view.rowStride = rowStride;
+	t.view.planeStride = planeStride;
+	return t;
+}
+
+} // namespace
+
+TEST(LdcfOnDemand, EveryCellEqualsTheWholeLevelFiltered)
+{
+	const Model model = test::randomLdcfModel(3, 16);
+	const int planes = kChannelCount * model.params.nFilters;
+	LdcfFilter dense, lazy;
+	ASSERT_TRUE(dense.init(model, 40, 40).ok());
+	ASSERT_TRUE(lazy.init(model, 40, 40).ok());
+	size_t compared = 0;
+	uint32_t seed = 0;
+	for (int h : { 1, 2, 5, 16, 17, 40 })
+		for (int w : { 1, 3, 6, 23, 40 })
+			for (bool extremes : { false, true }) {
+				const TestLevel level = randomLevel(seed++, h, w, extremes);
+				const LevelChannels want = dense.apply(level.view);
+				ASSERT_NE(want.data, nullptr);
+				const LevelChannels got = lazy.onDemand(level.view);
+				ASSERT_EQ(got.onDemand, &lazy);
+				ASSERT_EQ(got.paddedHeight, want.paddedHeight);
+				ASSERT_EQ(got.paddedWidth, want.paddedWidth);
+				ASSERT_EQ(got.rowStride, want.rowStride);
+				ASSERT_EQ(got.planeStride, want.planeStride);
+				// Every cell, in a shuffled order, each read twice (computed, then remembered).
+				std::vector<ptrdiff_t> cells;
+				for (int p = 0; p < planes; p++)
+					for (int y = 0; y < want.paddedHeight; y++)
+						for (int x = 0; x < want.paddedWidth; x++)
+							cells.push_back(p * want.planeStride + y * want.rowStride + x);
+				std::shuffle(cells.begin(), cells.end(), std::mt19937(seed));
+				for (int pass = 0; pass < 2; pass++)
+					for (ptrdiff_t c : cells) {
+						ASSERT_EQ(lazy.at(c), want.data[c])
+							<< h << "x" << w << (extremes ? " extremes" : "") << ", cell " << c
+							<< (pass ? " read again" : "");
+						compared++;
+					}
+			}
+	EXPECT_GT(compared, 100000u);
+}
+
+// A new level forgets the old one's cells, also after the generations wrap around.
+TEST(LdcfOnDemand, ANewLevelIsComputedAnew)
+{
+	const Model model = test::randomLdcfModel(4, 16);
+	LdcfFilter dense, lazy;
+	ASSERT_TRUE(dense.init(model, 12, 12).ok());
+	ASSERT_TRUE(lazy.init(model, 12, 12).ok());
+	for (uint32_t seed = 0; seed < 600; seed++) {
+		const TestLevel level = randomLevel(1000 + seed, 12, 12, false);
+		const LevelChannels want = dense.apply(level.view);
+		lazy.onDemand(level.view);
+		// The same few cells every time: remembered ones would be the last level's.
+		for (ptrdiff_t c : { ptrdiff_t(0), want.rowStride + 2, 3 * want.planeStride + 5 * want.rowStride + 4 })
+			ASSERT_EQ(lazy.at(c), want.data[c]) << "level " << seed << ", cell " << c;
+	}
+}
