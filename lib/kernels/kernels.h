@@ -293,6 +293,18 @@ struct WindowHit {
 	int32_t score;
 };
 
+// A window scoring h is a hit when it passed the cascade: counted in `passed`, written to
+// hits while there is room (the caller sees how many it lost).
+inline void keepHit(int32_t h, int32_t cascThr, int row, int col, WindowHit *hits, uint64_t capacity,
+		    uint64_t &passed)
+{
+	if (h > cascThr) {
+		if (passed < capacity)
+			hits[passed] = { row, col, h };
+		passed++;
+	}
+}
+
 // Evaluate every window whose origin is at (r * step, c * step) cells for r < rows,
 // c < cols, in the toolbox's order (columns outer). A window stops as soon as its
 // running score is <= cascThr and is kept if it ends above it. Returns the number of

@@ -111,11 +111,7 @@ uint64_t scanDepth2Batched(const uint16_t *chns, Windows win, const Depth2Tree *
 			int32_t h = s.h[l];
 			if (s.running[l])
 				h = finishDepth2(chns + at[l], trees, s.tree, nTrees, h, cascThr);
-			if (h > cascThr) {
-				if (passed < capacity)
-					hits[passed] = { rs[l], cs[l], h };
-				passed++;
-			}
+			keepHit(h, cascThr, rs[l], cs[l], hits, capacity, passed);
 		}
 	}
 	return passed;

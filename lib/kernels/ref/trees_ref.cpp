@@ -40,16 +40,6 @@ inline int32_t scoreTrees(const uint16_t *w, const TreeNode *nodes, int nTrees, 
 	return h;
 }
 
-inline void keep(int32_t h, int32_t cascThr, int r, int c, WindowHit *hits, uint64_t capacity,
-		 uint64_t &passed)
-{
-	if (h > cascThr) {
-		if (passed < capacity)
-			hits[passed] = { r, c, h };
-		passed++;
-	}
-}
-
 } // namespace
 
 uint64_t scanDepth2_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int cols, int step,
@@ -60,7 +50,7 @@ uint64_t scanDepth2_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int
 	for (int c = 0; c < cols; c++)
 		for (int r = 0; r < rows; r++) {
 			const uint16_t *w = chns + ptrdiff_t(r) * step * rowStride + ptrdiff_t(c) * step;
-			keep(scoreDepth2(w, trees, nTrees, cascThr), cascThr, r, c, hits, capacity, passed);
+			keepHit(scoreDepth2(w, trees, nTrees, cascThr), cascThr, r, c, hits, capacity, passed);
 		}
 	return passed;
 }
@@ -73,7 +63,7 @@ uint64_t scanTrees_ref(const uint16_t *chns, ptrdiff_t rowStride, int rows, int 
 	for (int c = 0; c < cols; c++)
 		for (int r = 0; r < rows; r++) {
 			const uint16_t *w = chns + ptrdiff_t(r) * step * rowStride + ptrdiff_t(c) * step;
-			keep(scoreTrees(w, nodes, nTrees, nodesPerTree, cascThr), cascThr, r, c, hits,
+			keepHit(scoreTrees(w, nodes, nTrees, nodesPerTree, cascThr), cascThr, r, c, hits,
 			     capacity, passed);
 		}
 	return passed;
@@ -87,7 +77,7 @@ uint64_t scanDepth2List_ref(const uint16_t *chns, ptrdiff_t rowStride, const uin
 	for (size_t i = 0; i < count; i++) {
 		const int r = int(windows[i] >> 16), c = int(windows[i] & 0xFFFF);
 		const uint16_t *w = chns + ptrdiff_t(r) * step * rowStride + ptrdiff_t(c) * step;
-		keep(scoreDepth2(w, trees, nTrees, cascThr), cascThr, r, c, hits, capacity, passed);
+		keepHit(scoreDepth2(w, trees, nTrees, cascThr), cascThr, r, c, hits, capacity, passed);
 	}
 	return passed;
 }
@@ -100,7 +90,7 @@ uint64_t scanTreesList_ref(const uint16_t *chns, ptrdiff_t rowStride, const uint
 	for (size_t i = 0; i < count; i++) {
 		const int r = int(windows[i] >> 16), c = int(windows[i] & 0xFFFF);
 		const uint16_t *w = chns + ptrdiff_t(r) * step * rowStride + ptrdiff_t(c) * step;
-		keep(scoreTrees(w, nodes, nTrees, nodesPerTree, cascThr), cascThr, r, c, hits,
+		keepHit(scoreTrees(w, nodes, nTrees, nodesPerTree, cascThr), cascThr, r, c, hits,
 		     capacity, passed);
 	}
 	return passed;

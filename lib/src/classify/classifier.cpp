@@ -109,21 +109,6 @@ int32_t Classifier::scoreOnDemand(LdcfFilter &level, ptrdiff_t base) const
 	return h;
 }
 
-namespace {
-
-// The reference kernels' record of a window that passed the cascade.
-void keepHit(int32_t h, int32_t cascThr, int r, int c, kernels::WindowHit *hits, uint64_t capacity,
-	     uint64_t &passed)
-{
-	if (h > cascThr) {
-		if (passed < capacity)
-			hits[passed] = { r, c, h };
-		passed++;
-	}
-}
-
-} // namespace
-
 uint64_t Classifier::scanList(const LevelChannels &level, const uint32_t *windows, size_t count,
 			      kernels::WindowHit *hits, uint64_t capacity) const
 {
@@ -133,7 +118,7 @@ uint64_t Classifier::scanList(const LevelChannels &level, const uint32_t *window
 		for (size_t i = 0; i < count; i++) {
 			const int r = int(windows[i] >> 16), c = int(windows[i] & 0xFFFF);
 			const ptrdiff_t base = ptrdiff_t(r) * step * level.rowStride + ptrdiff_t(c) * step;
-			keepHit(scoreOnDemand(*level.onDemand, base), cascThr_, r, c, hits, capacity, passed);
+			kernels::keepHit(scoreOnDemand(*level.onDemand, base), cascThr_, r, c, hits, capacity, passed);
 		}
 		return passed;
 	}
@@ -159,7 +144,7 @@ uint64_t Classifier::scan(const LevelChannels &level, kernels::WindowHit *hits,
 		for (int c = 0; c < cols; c++)
 			for (int r = 0; r < rows; r++) {
 				const ptrdiff_t base = ptrdiff_t(r) * step * level.rowStride + ptrdiff_t(c) * step;
-				keepHit(scoreOnDemand(*level.onDemand, base), cascThr_, r, c, hits, capacity, passed);
+				kernels::keepHit(scoreOnDemand(*level.onDemand, base), cascThr_, r, c, hits, capacity, passed);
 			}
 		return passed;
 	}
