@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "classify/classifier.h"
 #include "pyramid/ldcf_filter.h"
 #include "synthetic.h"
 
@@ -97,4 +98,43 @@ TEST(LdcfOnDemand, ANewLevelIsComputedAnew)
 		for (ptrdiff_t c : { ptrdiff_t(0), want.rowStride + 2, 3 * want.planeStride + 5 * want.rowStride + 4 })
 			ASSERT_EQ(lazy.at(c), want.data[c]) << "level " << seed << ", cell " << c;
 	}
+}
+
+// The classifier over a level on demand finds the windows and scores it finds over the
+// level filtered at once, whether it scans every window or a list of them.
+TEST(LdcfOnDemand, TheTreesScoreWhatTheyScoreOnTheWholeLevel)
+{
+	const Model model = test::randomLdcfModel(6, 64);
+	const int h = 2 * model.params.modelDsPadH / (2 * model.params.shrink) + 9;
+	const int w = 2 * model.params.modelDsPadW / (2 * model.params.shrink) + 7;
+	LdcfFilter dense, lazy;
+	ASSERT_TRUE(dense.init(model, h, w).ok());
+	ASSERT_TRUE(lazy.init(model, h, w).ok());
+	Classifier classifier;
+	classifier.init(model, dense.rowStride(), dense.planeStride());
+	classifier.setCascadeThreshold(-1000.0f); // every window a hit, with its score
+	const TestLevel level = randomLevel(77, h, w, false);
+	std::vector<kernels::WindowHit> want(4096), got(4096);
+	uint64_t windows = 0;
+	const uint64_t n = classifier.scan(dense.apply(level.view), want.data(), want.size(), &windows);
+	ASSERT_GT(n, 8u);
+	ASSERT_LE(n, want.size());
+	uint64_t lazyWindows = 0;
+	ASSERT_EQ(classifier.scan(lazy.onDemand(level.view), got.data(), got.size(), &lazyWindows), n);
+	EXPECT_EQ(lazyWindows, windows);
+	std::vector<uint32_t> list;
+	for (uint64_t k = 0; k < n; k++) {
+		EXPECT_EQ(got[k].row, want[k].row);
+		EXPECT_EQ(got[k].col, want[k].col);
+		EXPECT_EQ(got[k].score, want[k].score) << "window " << k;
+		list.push_back(uint32_t(want[k].row) << 16 | uint32_t(want[k].col));
+	}
+	// A list, on a fresh level: every third window.
+	std::vector<uint32_t> some;
+	for (size_t k = 0; k < list.size(); k += 3)
+		some.push_back(list[k]);
+	const uint64_t m = classifier.scanList(lazy.onDemand(level.view), some.data(), some.size(), got.data(), got.size());
+	ASSERT_EQ(m, some.size());
+	for (uint64_t k = 0; k < m; k++)
+		EXPECT_EQ(got[k].score, want[3 * k].score) << "listed window " << k;
 }
