@@ -31,8 +31,9 @@ uint64_t estimateDetectorBytes(const ModelParams &params, const DetectorConfig &
 	const double perPixel = kSharedBytesPerPyramidPixel + kThreadBytesPerPyramidPixel * std::max(1, config.threads);
 	double bytes = perPixel * pyramidPixels + kBytesPerInputPixel * inputPixels;
 	// LDCF: each thread's filter stage holds one filtered channel of the largest padded
-	// level and all 10 * nFilters half-size filtered channels (about 5.75 bytes per pyramid
-	// pixel at shrink 2 with 4 filters), as Pyramid::setFilters sizes them.
+	// level and all 10 * nFilters half-size filtered channels with a stamp byte each (about
+	// 8.25 bytes per pyramid pixel at shrink 2 with 4 filters), as Pyramid::setFilters
+	// sizes them.
 	if (params.nFilters > 0 && params.shrink > 0) {
 		const double levelH = std::ceil((std::ceil(config.maxHeight * up) + 8) / params.shrink) + 2 +
 				      2.0 * (params.padH / params.shrink);
