@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "classify/classifier.h"
@@ -83,21 +84,30 @@ TEST(LdcfOnDemand, EveryCellEqualsTheWholeLevelFiltered)
 	EXPECT_GT(compared, 100000u);
 }
 
-// A new level forgets the old one's cells, also after the generations wrap around.
+// A new level forgets the old one's cells, also after the generations wrap around: a cell
+// read only by the first level and again by the level that reuses its generation number
+// (the 256th) must be computed anew, not taken from the first.
 TEST(LdcfOnDemand, ANewLevelIsComputedAnew)
 {
 	const Model model = test::randomLdcfModel(4, 16);
 	LdcfFilter dense, lazy;
 	ASSERT_TRUE(dense.init(model, 12, 12).ok());
 	ASSERT_TRUE(lazy.init(model, 12, 12).ok());
-	for (uint32_t seed = 0; seed < 600; seed++) {
-		const TestLevel level = randomLevel(1000 + seed, 12, 12, false);
+	const ptrdiff_t everyLevel = 0, firstAndWrapped = 3 * 6 * 6 + 2 * 6 + 4; // plane 3, cell (2, 4)
+	size_t wrappedChecked = 0;
+	for (int k = 0; k < 600; k++) {
+		const TestLevel level = randomLevel(1000 + uint32_t(k), 12, 12, false);
 		const LevelChannels want = dense.apply(level.view);
+		ASSERT_EQ(want.rowStride, 6);
+		ASSERT_EQ(want.planeStride, 36);
 		lazy.onDemand(level.view);
-		// The same few cells every time: remembered ones would be the last level's.
-		for (ptrdiff_t c : { ptrdiff_t(0), want.rowStride + 2, 3 * want.planeStride + 5 * want.rowStride + 4 })
-			ASSERT_EQ(lazy.at(c), want.data[c]) << "level " << seed << ", cell " << c;
+		ASSERT_EQ(lazy.at(everyLevel), want.data[everyLevel]) << "level " << k;
+		if (k == 0 || k == 255 || k == 510) {
+			ASSERT_EQ(lazy.at(firstAndWrapped), want.data[firstAndWrapped]) << "level " << k;
+			wrappedChecked++;
+		}
 	}
+	EXPECT_EQ(wrappedChecked, 3u);
 }
 
 // The classifier over a level on demand finds the windows and scores it finds over the
@@ -137,4 +147,16 @@ TEST(LdcfOnDemand, TheTreesScoreWhatTheyScoreOnTheWholeLevel)
 	ASSERT_EQ(m, some.size());
 	for (uint64_t k = 0; k < m; k++)
 		EXPECT_EQ(got[k].score, want[3 * k].score) << "listed window " << k;
+}
+
+// A weight beyond the loader's range (|w| <= 2^15, which ldcfCell's sums rely on) is refused.
+TEST(LdcfOnDemand, AWeightBeyondQ15IsRefused)
+{
+	Model model = test::randomLdcfModel(8, 16);
+	LdcfFilter filter;
+	ASSERT_TRUE(filter.init(model, 12, 12).ok());
+	model.filters[7] = (1 << 15) + 1;
+	const Status st = filter.init(model, 12, 12);
+	ASSERT_FALSE(st.ok());
+	EXPECT_NE(std::string(st.message()).find("32769"), std::string::npos) << st.message();
 }

@@ -8,34 +8,10 @@
 namespace calped {
 namespace kernels {
 
-void ldcfFilter_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
-		    const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride)
-{
-	const int r = size / 2;
-	// Q14 x Q15 = Q29 sums; down to Q12.
-	const int shift = kQ + 15 - kLdcfQ;
-	for (int y = 0; y < height; y++)
-		for (int x = 0; x < width; x++) {
-			int64_t acc = 0;
-			// A convolution: filter tap (a, b) meets sample (y + r - a, x + r - b).
-			for (int a = 0; a < size; a++) {
-				const int sy = y + r - a;
-				if (sy < 0 || sy >= height)
-					continue;
-				for (int b = 0; b < size; b++) {
-					const int sx = x + r - b;
-					if (sx < 0 || sx >= width)
-						continue;
-					acc += int64_t(filter[a * size + b]) * src[sy * srcStride + sx];
-				}
-			}
-			dst[y * dstStride + x] = saturateU16(shiftRound(acc, shift) + kLdcfBias);
-		}
-}
-
 namespace {
 
-// Output (y, x) of ldcfFilter_ref over the whole plane.
+// Output (y, x): a convolution, filter tap (a, b) meets sample (y + r - a, x + r - b),
+// zero outside the plane; Q14 x Q15 = Q29 sums in 64 bits, down to Q12.
 uint16_t filtered(const uint16_t *src, ptrdiff_t stride, int width, int height,
 		  const int32_t *filter, int size, int y, int x)
 {
@@ -51,6 +27,14 @@ uint16_t filtered(const uint16_t *src, ptrdiff_t stride, int width, int height,
 }
 
 } // namespace
+
+void ldcfFilter_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
+		    const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride)
+{
+	for (int y = 0; y < height; y++)
+		for (int x = 0; x < width; x++)
+			dst[y * dstStride + x] = filtered(src, srcStride, width, height, filter, size, y, x);
+}
 
 uint16_t ldcfCell_ref(const uint16_t *plane, ptrdiff_t stride, int width, int height,
 		      const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap)

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <new>
 
+#include "model/blob_format.h"
+
 namespace calped {
 
 namespace {
-
-constexpr int32_t kMaxWeight = 1 << 15; // Q15: |weight| <= 1, as the model loader checks
 
 // imResample(C, .5): round(n / 2) samples, Matlab's rounding (halves away from zero).
 int halfSize(int n) { return (n + 1) / 2; }
@@ -25,7 +25,7 @@ Status LdcfFilter::init(const Model &model, int maxHeight, int maxWidth, const k
 	if (maxHeight < 1 || maxWidth < 1)
 		return Status::error(ErrorCode::InvalidArgument, "level size %dx%d", maxWidth, maxHeight);
 	for (int32_t f : model.filters)
-		if (f < -kMaxWeight || f > kMaxWeight) // ldcfCell's contract
+		if (f < -blob::kMaxFilterWeight || f > blob::kMaxFilterWeight) // the loader's range, ldcfCell's contract
 			return Status::error(ErrorCode::InvalidArgument, "LDCF filter weight %d beyond 2^15", int(f));
 	k_ = &k;
 	nFilters_ = p.nFilters;

@@ -85,7 +85,8 @@ LevelChannels Pyramid::classifierLevel(int i, const LevelRect *rects, int count,
 	Scratch &s = *scratch_[size_t(worker)];
 	const auto t0 = StageClock::now();
 	// Rectangles' windows (the calibrated method's) read a few percent of the filtered
-	// cells: computed as read. A whole level's windows read most of them: filtered at once.
+	// cells: computed as read. A whole level's windows read most of them: filtered at once
+	// (faster there, docs/calibrated.md).
 	const LevelChannels out = rects ? s.filter.onDemand(level) : s.filter.apply(level);
 	s.msFilter += msSince(t0);
 	return out;
