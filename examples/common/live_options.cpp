@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "live_options.h"
 
+#include <limits>
+
 namespace calped {
 namespace live {
 
@@ -31,7 +33,7 @@ bool takeLiveOption(const apps::ParsedOption &o, LiveOptions &out, std::string &
 	else if (n == "overlay-every")
 		apps::wholeIn(o, 1, 1000000000L, out.overlayEvery, error);
 	else if (n == "frames")
-		apps::wholeIn(o, 1, 1000000000000L, out.frames, error);
+		apps::wholeIn(o, 1, std::numeric_limits<long>::max(), out.frames, error);
 	else if (n == "timeout")
 		apps::wholeIn(o, 1, 600000L, out.timeoutMs, error);
 	else if (n == "frame-timeout")

@@ -255,19 +255,35 @@ void ldcfFilter_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int he
 		     const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride);
 void ldcfFilter_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int height,
 		     const int32_t *filter, int size, uint16_t *dst, ptrdiff_t dstStride);
+// LDCF's filter as ldcfCell takes it: the size x size Q15 weights (|w| <= 2^15) and, when
+// the vector versions can take them (5 x 5, every weight an int16), the same weights laid
+// out by packLdcfCellFilter; null otherwise, and the vector versions run the reference.
+struct LdcfCellFilter {
+	const int32_t *weights;
+	int size;
+	const int16_t *packed;
+};
+// The layout: for filter row a (0..4) and output column j (0..3) of a block of adjacent
+// full-size cells, eight int16 lanes that meet the samples from two columns before the
+// block's first: lane j + 4 - b holds tap (a, b), the rest 0 (index (a * 4 + j) * 8 + lane).
+constexpr int kLdcfPackedCount = 5 * 4 * 8;
+// False, writing nothing, when the filter is not 5 x 5 or a weight is not an int16.
+bool packLdcfCellFilter(const int32_t *weights, int size, int16_t *packed);
 // One cell of a filtered, half-size plane on its own (LdcfFilter::onDemand): what
 // ldcfFilter over the whole width x height plane and then resamplePlane with these taps
 // give at that output. The filter at each full-size cell the taps read (rows yTap.first..,
 // columns xTap.first..), rounded as ldcfFilter_ref rounds it; then the taps along the row
-// and down the column, each rounded as resamplePlane_ref rounds them. |weights| <= 2^15.
+// and down the column, each rounded as resamplePlane_ref rounds them.
 uint16_t ldcfCell_ref(const uint16_t *plane, ptrdiff_t stride, int width, int height,
-		      const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap);
-// SIMD versions: 5x5 filters, cells whose filter reads lie inside the plane
-// (opt/ldcf_body.h); others by the reference.
+		      const LdcfCellFilter &filter, const ResampleTap &xTap, const ResampleTap &yTap);
+// SIMD versions: packed filters, cells whose filter reads lie inside the plane and whose
+// taps read at most four columns and four rows (opt/ldcf_body.h); others by the
+// reference. All the full-size values a cell needs come from one load of each plane row
+// they read.
 uint16_t ldcfCell_avx2(const uint16_t *plane, ptrdiff_t stride, int width, int height,
-		       const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap);
+		       const LdcfCellFilter &filter, const ResampleTap &xTap, const ResampleTap &yTap);
 uint16_t ldcfCell_neon(const uint16_t *plane, ptrdiff_t stride, int width, int height,
-		       const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap);
+		       const LdcfCellFilter &filter, const ResampleTap &xTap, const ResampleTap &yTap);
 
 // ---- boosted trees over sliding windows ------------------------------------------------
 // A complete depth-2 tree with its feature offsets resolved for the level layout:

@@ -215,5 +215,25 @@ bool buildResampleTaps(int n, int m, double gain, ResampleTap *taps)
 	return true;
 }
 
+bool packLdcfCellFilter(const int32_t *weights, int size, int16_t *packed)
+{
+	constexpr int kSize = 5, kColumns = 4, kLanes = 8;
+	static_assert(kLdcfPackedCount == kSize * kColumns * kLanes, "the packed layout");
+	if (size != kSize)
+		return false;
+	for (int i = 0; i < kSize * kSize; i++)
+		if (weights[i] < INT16_MIN || weights[i] > INT16_MAX)
+			return false;
+	for (int a = 0; a < kSize; a++)
+		for (int j = 0; j < kColumns; j++) {
+			int16_t *lanes = packed + (a * kColumns + j) * kLanes;
+			for (int lane = 0; lane < kLanes; lane++) {
+				const int b = j + 4 - lane; // the tap that meets this lane's sample
+				lanes[lane] = b >= 0 && b < kSize ? int16_t(weights[a * kSize + b]) : 0;
+			}
+		}
+	return true;
+}
+
 } // namespace kernels
 } // namespace calped

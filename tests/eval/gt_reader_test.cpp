@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Both ground-truth readers on small files, including malformed ones: every error must
 // name the file and the line.
+#include <algorithm>
 #include <fstream>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -150,19 +152,21 @@ TEST(CvmlReader, MessagesStayOnePrintableLine)
 	EXPECT_TRUE(printable(error)) << error;
 }
 
-// Frame numbers are stored sparsely: a file naming frame 10^15 costs one box, not a table
-// of 10^15 frames (which used to throw bad_alloc, or loop for ever counting boxes).
+// Frame numbers are stored sparsely: a file naming frame 10^15 (a quarter of the largest
+// long where long has 32 bits) costs one box, not a table of that many frames (which used
+// to throw bad_alloc, or loop for ever counting boxes).
 TEST(MotReader, HugeFrameNumberCostsOneBox)
 {
-	const std::string text = "1000000000000000,1,10,20,30,40\n3,2,1,2,3,4,0\n";
+	const long huge = long(std::min<long long>(1000000000000000LL, std::numeric_limits<long>::max() / 4));
+	const std::string text = std::to_string(huge) + ",1,10,20,30,40\n3,2,1,2,3,4,0\n";
 	GroundTruth gt;
 	std::string error;
 	ASSERT_TRUE(parseMotGroundTruth(text.data(), text.size(), "gt.txt", gt, error)) << error;
-	EXPECT_EQ(gt.lastFrame(), 1000000000000000L);
+	EXPECT_EQ(gt.lastFrame(), huge);
 	EXPECT_EQ(gt.count(gt.lastFrame(), false), 1);
 	EXPECT_EQ(gt.count(gt.lastFrame(), true), 1);
 	EXPECT_EQ(gt.count(2, true), 0);
-	EXPECT_EQ(gt.boxes(1000000000000000L).size(), 1u);
+	EXPECT_EQ(gt.boxes(huge).size(), 1u);
 	EXPECT_TRUE(gt.boxes(999).empty());
 }
 

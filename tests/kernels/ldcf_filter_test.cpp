@@ -80,7 +80,8 @@ TEST(LdcfFilterKernel, ExtremesSaturateAsTheReference)
 // One cell of the filtered, half-size plane on its own (ldcfCell, LdcfFilter::onDemand):
 // every table's, at every output, equals the whole plane filtered (ldcfFilter_ref) and
 // resampled (resamplePlane_ref); odd and even sizes (two or three taps), cells at every
-// distance from the edges, full-range samples, weights of +-1.0, sizes 5 and 3.
+// distance from the edges, full-range samples, weights of +-1.0 (which do not pack: the
+// vector versions then run the reference), sizes 5 and 3.
 TEST(LdcfCellKernel, EveryTableEqualsTheWholePlaneFilteredAndResampled)
 {
 	std::mt19937 rng(21);
@@ -103,6 +104,10 @@ TEST(LdcfCellKernel, EveryTableEqualsTheWholePlaneFilteredAndResampled)
 				std::vector<ResampleTap> xTaps(size_t(mw) + 1), yTaps(size_t(mh) + 1);
 				ASSERT_TRUE(buildResampleTaps(w, mw, 1.0, xTaps.data()));
 				ASSERT_TRUE(buildResampleTaps(h, mh, 1.0, yTaps.data()));
+				std::vector<int16_t> packed(kLdcfPackedCount);
+				const bool packs = packLdcfCellFilter(filter.data(), size, packed.data());
+				EXPECT_EQ(packs, size == 5 && range != 2);
+				const LdcfCellFilter cellFilter{ filter.data(), size, packs ? packed.data() : nullptr };
 				ldcfFilter_ref(src.data(), stride, w, h, filter.data(), size, full.data(), w);
 				resamplePlane_ref(full.data(), w, w, h, want.data(), mw, mw, mh, xTaps.data(),
 						  yTaps.data(), tmp.data(), mw);
@@ -110,7 +115,7 @@ TEST(LdcfCellKernel, EveryTableEqualsTheWholePlaneFilteredAndResampled)
 					for (int y = 0; y < mh; y++)
 						for (int x = 0; x < mw; x++) {
 							const uint16_t got = tables[t]->ldcfCell(src.data(), stride, w, h,
-												 filter.data(), size, xTaps[size_t(x)],
+												 cellFilter, xTaps[size_t(x)],
 												 yTaps[size_t(y)]);
 							ASSERT_EQ(got, want[size_t(y) * mw + x])
 								<< tables[t]->name << " " << w << "x" << h << " filter " << size

@@ -6,6 +6,7 @@
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -100,7 +101,7 @@ int parseOptions(int argc, const char *const *argv, Options &out)
 		else if (n == "overlay-every")
 			ok = wholeIn(o, 1, 1000000000L, out.overlayEvery, error);
 		else if (n == "max-frames")
-			ok = wholeIn(o, 1, 1000000000000L, out.maxFrames, error);
+			ok = wholeIn(o, 1, std::numeric_limits<long>::max(), out.maxFrames, error);
 		else if (n == "quiet")
 			out.quiet = true;
 		if (!ok)

@@ -3,8 +3,8 @@
 // two bytes so that the widening multiply-accumulates (int16 x int16 into int32) sum
 // exactly (opt/ldcf_body.h shows why they give the reference's rounding bit for bit). The
 // plane's two-cell border, where the filter meets the zeros beyond it, is scalar.
-// ldcfCell_neon: one output of the filtered, half-size plane, each full-size value it
-// needs as one row of eight samples per filter row (int32 lanes, byte split as above).
+// ldcfCell_neon: one output of the filtered, half-size plane from a block of the full-size
+// values it needs, computed together from one load of each plane row they read.
 #include <arm_neon.h>
 
 #include <algorithm>
@@ -79,46 +79,78 @@ void ldcfFilter_neon(const uint16_t *src, ptrdiff_t srcStride, int width, int he
 
 namespace {
 
-// The filter at (y, x) of the plane, every sample inside it and samples x - 2 .. x + 5 of
-// each row read (x + 5 < width): L and H, the byte sums of opt/ldcf_body.h, over int32
-// lanes (below 2^28: 25 x 255 x 2^15), then the reference's rounding and bias.
-// first[a]: filter row a reversed (lane k meets sample x - 2 + k); fifth[a]: its last
-// tap in lane 0 (sample x + 2).
-inline uint16_t filteredAt(const uint16_t *plane, ptrdiff_t stride, int y, int x,
-			   const int32x4_t (&first)[kSize], const int32x4_t (&fifth)[kSize])
+// The cell whose taps read full-size cells (y0 + r, x0 + j), r < Rows, j < Columns, every
+// sample they need inside the plane. Their filtered values come from one load of each
+// plane row they reach, eight samples from x0 - 2, split into bytes and multiplied lane by
+// lane with the packed taps of each output column: L and H of opt/ldcf_body.h in int32
+// lanes (below 2^28), then its rounding and the bias; then the taps.
+template <int Rows, int Columns>
+uint16_t cell(const uint16_t *plane, ptrdiff_t stride, const int16_t *packed, const ResampleTap &xTap,
+	      const ResampleTap &yTap)
 {
-	const uint32x4_t lowByte = vdupq_n_u32(0xFF);
-	int32x4_t lo = vdupq_n_s32(0), hi = lo;
-	for (int a = 0; a < kSize; a++) {
-		const uint16x8_t s = vld1q_u16(plane + (y + kReach - a) * stride + x - kReach);
-		const uint32x4_t s0 = vmovl_u16(vget_low_u16(s)), s4 = vmovl_u16(vget_high_u16(s));
-		lo = vmlaq_s32(lo, vreinterpretq_s32_u32(vandq_u32(s0, lowByte)), first[a]);
-		hi = vmlaq_s32(hi, vreinterpretq_s32_u32(vshrq_n_u32(s0, 8)), first[a]);
-		lo = vmlaq_s32(lo, vreinterpretq_s32_u32(vandq_u32(s4, lowByte)), fifth[a]);
-		hi = vmlaq_s32(hi, vreinterpretq_s32_u32(vshrq_n_u32(s4, 8)), fifth[a]);
+	const int y0 = yTap.first, x0 = xTap.first;
+	const uint16x8_t lowByte = vdupq_n_u16(0x00FF);
+	int32x4_t lo[Rows][Columns], hi[Rows][Columns];
+#pragma GCC unroll 4
+	for (int r = 0; r < Rows; r++)
+#pragma GCC unroll 4
+		for (int j = 0; j < Columns; j++)
+			lo[r][j] = hi[r][j] = vdupq_n_s32(0);
+#pragma GCC unroll 8
+	for (int i = 0; i < Rows + 4; i++) {
+		const uint16x8_t s = vld1q_u16(plane + (y0 - kReach + i) * stride + x0 - kReach);
+		const int16x8_t sLo = vreinterpretq_s16_u16(vandq_u16(s, lowByte));
+		const int16x8_t sHi = vreinterpretq_s16_u16(vshrq_n_u16(s, 8));
+		// Plane row y0 - 2 + i meets filter row a = r + 4 - i of output row r.
+#pragma GCC unroll 4
+		for (int r = 0; r < Rows; r++) {
+			const int a = r + 4 - i;
+			if (a < 0 || a > 4)
+				continue;
+#pragma GCC unroll 4
+			for (int j = 0; j < Columns; j++) {
+				const int16x8_t w = vld1q_s16(packed + (a * 4 + j) * 8);
+				lo[r][j] = vmlal_s16(lo[r][j], vget_low_s16(sLo), vget_low_s16(w));
+				lo[r][j] = vmlal_s16(lo[r][j], vget_high_s16(sLo), vget_high_s16(w));
+				hi[r][j] = vmlal_s16(hi[r][j], vget_low_s16(sHi), vget_low_s16(w));
+				hi[r][j] = vmlal_s16(hi[r][j], vget_high_s16(sHi), vget_high_s16(w));
+			}
+		}
 	}
-	// Lane sums in uint32 arithmetic (the same bits as int32's).
-	const uint32x2_t sums = laneSums2(vreinterpretq_u32_s32(lo), vreinterpretq_u32_s32(hi));
-	const int32_t l = int32_t(vget_lane_u32(sums, 0)), h = int32_t(vget_lane_u32(sums, 1));
-	return saturateU16(int64_t(ldcf::fromByteSums(h, l)) + kLdcfBias);
+	// Lane sums two outputs at a time, in uint32 arithmetic (the same bits as int32's).
+	constexpr int kCount = Rows * Columns;
+	uint16_t filtered[Rows][Columns];
+#pragma GCC unroll 8
+	for (int n = 0; n < kCount; n += 2) {
+		const int m = std::min(n + 1, kCount - 1);
+		const uint32x4_t sums = horizontalSums4(
+			vreinterpretq_u32_s32(lo[n / Columns][n % Columns]), vreinterpretq_u32_s32(hi[n / Columns][n % Columns]),
+			vreinterpretq_u32_s32(lo[m / Columns][m % Columns]), vreinterpretq_u32_s32(hi[m / Columns][m % Columns]));
+		filtered[n / Columns][n % Columns] = saturateU16(
+			int64_t(ldcf::fromByteSums(int32_t(vgetq_lane_u32(sums, 1)), int32_t(vgetq_lane_u32(sums, 0)))) + kLdcfBias);
+		filtered[m / Columns][m % Columns] = saturateU16(
+			int64_t(ldcf::fromByteSums(int32_t(vgetq_lane_u32(sums, 3)), int32_t(vgetq_lane_u32(sums, 2)))) + kLdcfBias);
+	}
+	return ldcf::resampledBlock(filtered, xTap, yTap);
 }
+
+using CellFn = uint16_t (*)(const uint16_t *, ptrdiff_t, const int16_t *, const ResampleTap &,
+			    const ResampleTap &);
+constexpr CellFn kCells[4][4] = {
+	{ cell<1, 1>, cell<1, 2>, cell<1, 3>, cell<1, 4> },
+	{ cell<2, 1>, cell<2, 2>, cell<2, 3>, cell<2, 4> },
+	{ cell<3, 1>, cell<3, 2>, cell<3, 3>, cell<3, 4> },
+	{ cell<4, 1>, cell<4, 2>, cell<4, 3>, cell<4, 4> },
+};
 
 } // namespace
 
 uint16_t ldcfCell_neon(const uint16_t *plane, ptrdiff_t stride, int width, int height,
-		       const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap)
+		       const LdcfCellFilter &filter, const ResampleTap &xTap, const ResampleTap &yTap)
 {
-	if (!ldcf::cellVectorizable(width, height, size, xTap, yTap))
-		return ldcfCell_ref(plane, stride, width, height, filter, size, xTap, yTap);
-	int32x4_t first[kSize], fifth[kSize];
-	for (int a = 0; a < kSize; a++) {
-		const int32_t *f = filter + a * kSize;
-		const int32_t lanes[4] = { f[4], f[3], f[2], f[1] };
-		first[a] = vld1q_s32(lanes);
-		fifth[a] = vsetq_lane_s32(f[0], vdupq_n_s32(0), 0);
-	}
-	return ldcf::resampledCell(xTap, yTap,
-				   [&](int y, int x) { return filteredAt(plane, stride, y, x, first, fifth); });
+	if (!ldcf::cellVectorizable(width, height, filter, xTap, yTap))
+		return ldcfCell_ref(plane, stride, width, height, filter, xTap, yTap);
+	return kCells[yTap.count - 1][xTap.count - 1](plane, stride, filter.packed, xTap, yTap);
 }
 
 } // namespace kernels

@@ -59,27 +59,33 @@ inline bool vectorizable(const int32_t *filter, int size)
 inline int32_t fromByteSums(int32_t hi, int32_t lo) { return (hi + (lo >> 8) + 256) >> 9; }
 
 // ldcfCell's half-size output from the filtered values of the full-size cells its taps
-// read (filtered(y, x)): resamplePlane_ref's pass along the row, then down the column,
-// each rounded as it rounds them.
-template <class Filtered>
-inline uint16_t resampledCell(const ResampleTap &xTap, const ResampleTap &yTap, Filtered filtered)
+// read (Rows x Columns, the taps' counts): resamplePlane_ref's pass along the row, then
+// down the column, each rounded as it rounds them.
+template <int Rows, int Columns>
+inline uint16_t resampledBlock(const uint16_t (&filtered)[Rows][Columns], const ResampleTap &xTap,
+			       const ResampleTap &yTap)
 {
 	int64_t acc = 0;
-	for (int a = 0; a < yTap.count; a++) {
+#pragma GCC unroll 4
+	for (int a = 0; a < Rows; a++) {
 		int64_t row = 0;
-		for (int b = 0; b < xTap.count; b++)
-			row += int64_t(xTap.weight[b]) * filtered(yTap.first + a, xTap.first + b);
+#pragma GCC unroll 4
+		for (int b = 0; b < Columns; b++)
+			row += int64_t(xTap.weight[b]) * filtered[a][b];
 		acc += int64_t(yTap.weight[a]) * saturateU16(shiftRound(row, kQ));
 	}
 	return saturateU16(shiftRound(acc, kQ));
 }
 
-// Whether ldcfCell's vector versions take this cell: a 5 x 5 filter whose samples lie
-// inside the plane, and rows of eight samples from two before each full-size cell.
-inline bool cellVectorizable(int width, int height, int size, const ResampleTap &xTap,
-			     const ResampleTap &yTap)
+// Whether ldcfCell's vector versions take this cell: a packed filter, taps that read at
+// most four columns and rows, and one row of eight samples from two columns before the
+// first full-size cell, of every row the filter reaches, inside the plane.
+constexpr int kCellMaxTaps = 4;
+inline bool cellVectorizable(int width, int height, const LdcfCellFilter &filter,
+			     const ResampleTap &xTap, const ResampleTap &yTap)
 {
-	return size == 5 && xTap.first >= 2 && xTap.first + xTap.count - 1 + 5 < width &&
+	return filter.packed && xTap.count >= 1 && xTap.count <= kCellMaxTaps && yTap.count >= 1 &&
+	       yTap.count <= kCellMaxTaps && xTap.first >= 2 && xTap.first + 5 < width &&
 	       yTap.first >= 2 && yTap.first + yTap.count - 1 + 2 < height;
 }
 

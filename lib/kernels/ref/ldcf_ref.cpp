@@ -37,7 +37,7 @@ void ldcfFilter_ref(const uint16_t *src, ptrdiff_t srcStride, int width, int hei
 }
 
 uint16_t ldcfCell_ref(const uint16_t *plane, ptrdiff_t stride, int width, int height,
-		      const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap)
+		      const LdcfCellFilter &filter, const ResampleTap &xTap, const ResampleTap &yTap)
 {
 	// resamplePlane_ref's two passes for one output: along the rows the taps read, then
 	// down the column.
@@ -46,7 +46,8 @@ uint16_t ldcfCell_ref(const uint16_t *plane, ptrdiff_t stride, int width, int he
 		int64_t row = 0;
 		for (int b = 0; b < xTap.count; b++)
 			row += int64_t(xTap.weight[b]) *
-			       filtered(plane, stride, width, height, filter, size, yTap.first + a, xTap.first + b);
+			       filtered(plane, stride, width, height, filter.weights, filter.size, yTap.first + a,
+				       xTap.first + b);
 		acc += int64_t(yTap.weight[a]) * saturateU16(shiftRound(row, kQ));
 	}
 	return saturateU16(shiftRound(acc, kQ));

@@ -3,8 +3,8 @@
 // its two bytes so that _mm256_madd_epi16 multiplies adjacent taps' int16 pairs into exact
 // 32-bit sums (opt/ldcf_body.h shows why they give the reference's rounding bit for bit).
 // The plane's two-cell border, where the filter meets the zeros beyond it, is scalar.
-// ldcfCell_avx2: one output of the filtered, half-size plane, each full-size value it
-// needs as one row of eight samples per filter row (int32 lanes, byte split as above).
+// ldcfCell_avx2: one output of the filtered, half-size plane from a block of the full-size
+// values it needs, computed together from one load of each plane row they read.
 #include <immintrin.h>
 
 #include <algorithm>
@@ -91,45 +91,89 @@ void ldcfFilter_avx2(const uint16_t *src, ptrdiff_t srcStride, int width, int he
 
 namespace {
 
-// The filter at (y, x) of the plane, every sample inside it and samples x - 2 .. x + 5 of
-// each row read (x + 5 < width): L and H, the byte sums of opt/ldcf_body.h, over int32
-// lanes (below 2^28: 25 x 255 x 2^15), then the reference's rounding and bias.
-inline uint16_t filteredAt(const uint16_t *plane, ptrdiff_t stride, int y, int x,
-			   const __m256i (&reversed)[kSize])
+// The cell whose taps read full-size cells (y0 + r, x0 + j), r < Rows, j < Columns, every
+// sample they need inside the plane. Their filtered values come from one load of each
+// plane row they reach, eight samples from x0 - 2 in both 128-bit halves, split into
+// bytes and multiplied by madd with the packed taps (column 2p in the low half, 2p + 1
+// in the high): L and H of opt/ldcf_body.h in int32 lanes (below 2^28), then its rounding
+// and the bias; then the taps.
+template <int Rows, int Columns>
+uint16_t cell(const uint16_t *plane, ptrdiff_t stride, const int16_t *packed, const ResampleTap &xTap,
+	      const ResampleTap &yTap)
 {
-	const __m256i lowByte = _mm256_set1_epi32(0xFF);
-	__m256i lo = _mm256_setzero_si256(), hi = _mm256_setzero_si256();
-	for (int a = 0; a < kSize; a++) {
-		// Filter row a meets samples (y + 2 - a, x - 2 .. x + 2), lanes 0-4.
-		const __m128i row = _mm_loadu_si128(
-			reinterpret_cast<const __m128i *>(plane + (y + kReach - a) * stride + x - kReach));
-		const __m256i s = _mm256_cvtepu16_epi32(row);
-		lo = _mm256_add_epi32(lo, _mm256_mullo_epi32(_mm256_and_si256(s, lowByte), reversed[a]));
-		hi = _mm256_add_epi32(hi, _mm256_mullo_epi32(_mm256_srli_epi32(s, 8), reversed[a]));
+	constexpr int kPairs = (Columns + 1) / 2;
+	const int y0 = yTap.first, x0 = xTap.first;
+	const __m256i lowByte = _mm256_set1_epi16(0x00FF);
+	__m256i lo[Rows][kPairs], hi[Rows][kPairs];
+#pragma GCC unroll 4
+	for (int r = 0; r < Rows; r++)
+#pragma GCC unroll 2
+		for (int p = 0; p < kPairs; p++)
+			lo[r][p] = hi[r][p] = _mm256_setzero_si256();
+#pragma GCC unroll 8
+	for (int i = 0; i < Rows + 4; i++) {
+		const __m256i s = _mm256_broadcastsi128_si256(_mm_loadu_si128(
+			reinterpret_cast<const __m128i *>(plane + (y0 - kReach + i) * stride + x0 - kReach)));
+		const __m256i sLo = _mm256_and_si256(s, lowByte), sHi = _mm256_srli_epi16(s, 8);
+		// Plane row y0 - 2 + i meets filter row a = r + 4 - i of output row r.
+#pragma GCC unroll 4
+		for (int r = 0; r < Rows; r++) {
+			const int a = r + 4 - i;
+			if (a < 0 || a > 4)
+				continue;
+#pragma GCC unroll 2
+			for (int p = 0; p < kPairs; p++) {
+				const __m256i w = _mm256_loadu_si256(
+					reinterpret_cast<const __m256i *>(packed + (a * 4 + 2 * p) * 8));
+				lo[r][p] = _mm256_add_epi32(lo[r][p], _mm256_madd_epi16(sLo, w));
+				hi[r][p] = _mm256_add_epi32(hi[r][p], _mm256_madd_epi16(sHi, w));
+			}
+		}
 	}
-	// Lane sums: [L, H, L, H] after the two horizontal adds.
-	const __m256i pairs = _mm256_hadd_epi32(lo, hi);
-	__m128i t = _mm_add_epi32(_mm256_castsi256_si128(pairs), _mm256_extracti128_si256(pairs, 1));
-	t = _mm_hadd_epi32(t, t);
-	const int32_t l = _mm_cvtsi128_si32(t), h = _mm_extract_epi32(t, 1);
-	return saturateU16(int64_t(ldcf::fromByteSums(h, l)) + kLdcfBias);
+	// Two accumulators at a time: per half [L, H, L', H'] by two horizontal adds, then
+	// ldcf::fromByteSums in lanes 0 and 2, the bias and the reference's saturation.
+	const __m256i round = _mm256_set1_epi32(256), bias = _mm256_set1_epi32(kLdcfBias);
+	const __m256i zero = _mm256_setzero_si256(), top = _mm256_set1_epi32(65535);
+	constexpr int kCount = Rows * kPairs;
+	uint16_t filtered[Rows][Columns];
+#pragma GCC unroll 8
+	for (int n = 0; n < kCount; n += 2) {
+		const int m = std::min(n + 1, kCount - 1);
+		const __m256i u = _mm256_hadd_epi32(_mm256_hadd_epi32(lo[n / kPairs][n % kPairs], hi[n / kPairs][n % kPairs]),
+						    _mm256_hadd_epi32(lo[m / kPairs][m % kPairs], hi[m / kPairs][m % kPairs]));
+		const __m256i h = _mm256_shuffle_epi32(u, _MM_SHUFFLE(3, 3, 1, 1));
+		const __m256i v = _mm256_min_epi32(_mm256_max_epi32(_mm256_add_epi32(
+			_mm256_srai_epi32(_mm256_add_epi32(_mm256_add_epi32(h, _mm256_srai_epi32(u, 8)), round), 9), bias), zero), top);
+		alignas(32) int32_t lanes[8];
+		_mm256_store_si256(reinterpret_cast<__m256i *>(lanes), v);
+#pragma GCC unroll 2
+		for (int k = 0; k < 2; k++) {
+			const int at = k == 0 ? n : m, r = at / kPairs, j = 2 * (at % kPairs);
+			filtered[r][j] = uint16_t(lanes[2 * k]);
+			if (j + 1 < Columns)
+				filtered[r][j + 1] = uint16_t(lanes[4 + 2 * k]);
+		}
+	}
+	return ldcf::resampledBlock(filtered, xTap, yTap);
 }
+
+using CellFn = uint16_t (*)(const uint16_t *, ptrdiff_t, const int16_t *, const ResampleTap &,
+			    const ResampleTap &);
+constexpr CellFn kCells[4][4] = {
+	{ cell<1, 1>, cell<1, 2>, cell<1, 3>, cell<1, 4> },
+	{ cell<2, 1>, cell<2, 2>, cell<2, 3>, cell<2, 4> },
+	{ cell<3, 1>, cell<3, 2>, cell<3, 3>, cell<3, 4> },
+	{ cell<4, 1>, cell<4, 2>, cell<4, 3>, cell<4, 4> },
+};
 
 } // namespace
 
 uint16_t ldcfCell_avx2(const uint16_t *plane, ptrdiff_t stride, int width, int height,
-		       const int32_t *filter, int size, const ResampleTap &xTap, const ResampleTap &yTap)
+		       const LdcfCellFilter &filter, const ResampleTap &xTap, const ResampleTap &yTap)
 {
-	if (!ldcf::cellVectorizable(width, height, size, xTap, yTap))
-		return ldcfCell_ref(plane, stride, width, height, filter, size, xTap, yTap);
-	// Each filter row reversed into lanes 0-4 (lane k meets sample x - 2 + k), zeros after.
-	const __m256i firstFive = _mm256_setr_epi32(-1, -1, -1, -1, -1, 0, 0, 0);
-	const __m256i reverse = _mm256_setr_epi32(4, 3, 2, 1, 0, 5, 6, 7);
-	__m256i reversed[kSize];
-	for (int a = 0; a < kSize; a++)
-		reversed[a] = _mm256_permutevar8x32_epi32(_mm256_maskload_epi32(filter + a * kSize, firstFive), reverse);
-	return ldcf::resampledCell(xTap, yTap,
-				   [&](int y, int x) { return filteredAt(plane, stride, y, x, reversed); });
+	if (!ldcf::cellVectorizable(width, height, filter, xTap, yTap))
+		return ldcfCell_ref(plane, stride, width, height, filter, xTap, yTap);
+	return kCells[yTap.count - 1][xTap.count - 1](plane, stride, filter.packed, xTap, yTap);
 }
 
 } // namespace kernels

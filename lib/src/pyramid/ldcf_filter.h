@@ -67,6 +67,10 @@ private:
 	const kernels::KernelTable *k_ = nullptr;
 	int nFilters_ = 0, size_ = 0;
 	std::vector<int32_t> filters_;
+	// Each plane's filter in ldcfCell's vector layout (kernels::packLdcfCellFilter), and
+	// whether it could be packed (all or none: one size, one weight range).
+	std::vector<int16_t> packed_;
+	bool isPacked_ = false;
 	PlaneBuffer<uint16_t> full_; // one filtered channel at the level's size
 	PlaneBuffer<uint16_t> tmp_;  // the resampler's row pass
 	std::vector<kernels::ResampleTap> xTaps_, yTaps_;
