@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 // Lookup tables for the kernels, built once at setup (never on the per-frame path).
 #include "kernels.h"
+#include "opt/ldcf_body.h"
 
 #include <algorithm>
 #include <cmath>
@@ -219,11 +220,8 @@ bool packLdcfCellFilter(const int32_t *weights, int size, int16_t *packed)
 {
 	constexpr int kSize = 5, kColumns = 4, kLanes = 8;
 	static_assert(kLdcfPackedCount == kSize * kColumns * kLanes, "the packed layout");
-	if (size != kSize)
+	if (!ldcf::vectorizable(weights, size))
 		return false;
-	for (int i = 0; i < kSize * kSize; i++)
-		if (weights[i] < INT16_MIN || weights[i] > INT16_MAX)
-			return false;
 	for (int a = 0; a < kSize; a++)
 		for (int j = 0; j < kColumns; j++) {
 			int16_t *lanes = packed + (a * kColumns + j) * kLanes;

@@ -68,7 +68,8 @@ private:
 	int nFilters_ = 0, size_ = 0;
 	std::vector<int32_t> filters_;
 	// Each plane's filter in ldcfCell's vector layout (kernels::packLdcfCellFilter), and
-	// whether it could be packed (all or none: one size, one weight range).
+	// whether every plane's could be packed: if one cannot (a weight of +1.0), none is
+	// used and every cell takes the reference kernel.
 	std::vector<int16_t> packed_;
 	bool isPacked_ = false;
 	PlaneBuffer<uint16_t> full_; // one filtered channel at the level's size
